@@ -1,0 +1,166 @@
+"""Floating-point expansion arithmetic (Shewchuk 1997), compiled with numba.
+
+An *expansion* is a list of doubles, ordered by increasing magnitude and
+non-overlapping, whose exact sum is the number it represents.  Sums and
+products of expansions are computed exactly with error-free transformations
+(`two_sum`, `two_product`), so the sign of a polynomial in the input doubles
+can be decided exactly.  The predicates in ``predicates.py`` use these only
+when their fast floating-point filter cannot decide.
+
+Conventions (the invariants every function here keeps):
+
+* an expansion is ``(e, elen)``: the first ``elen`` entries of array ``e``;
+* zero components are eliminated, but an expansion always has ``elen >= 1``
+  (zero is ``[0.0]``), so the most significant component ``e[elen - 1]``
+  carries the sign of the whole value;
+* no function allocates: callers pass output (and scratch) slices.
+
+Never compile this with ``fastmath``: re-association destroys the error terms.
+
+Example (run ``python -m doctest reference_impl/expansion.py``):
+
+>>> import numpy as np
+>>> h = np.empty(4)
+>>> two_sum(1.0, 1e-30)
+(1.0, 1e-30)
+>>> n = add(np.array([1e-30, 1.0]), 2, np.array([-1.0]), 1, h)
+>>> h[:n].tolist()
+[1e-30]
+"""
+from __future__ import annotations
+
+from numba import njit
+
+SPLITTER = 134217729.0  # 2**27 + 1, splits a double into two 26-bit halves
+EPSILON = 2.0 ** -53     # half an ulp of 1.0 (round-to-nearest unit roundoff)
+
+__all__ = ["SPLITTER", "EPSILON", "two_sum", "two_diff", "two_product", "diff", "add",
+           "scale", "mul", "negate"]
+
+
+@njit(cache=True)
+def two_sum(a, b):
+    """x + y == a + b exactly, with x = fl(a + b)."""
+    x = a + b
+    bv = x - a
+    av = x - bv
+    return x, (a - av) + (b - bv)
+
+
+@njit(cache=True)
+def two_diff(a, b):
+    """x + y == a - b exactly, with x = fl(a - b)."""
+    x = a - b
+    bv = a - x
+    av = x + bv
+    return x, (a - av) + (bv - b)
+
+
+@njit(cache=True)
+def _split(a):
+    c = SPLITTER * a
+    big = c - a
+    hi = c - big
+    return hi, a - hi
+
+
+@njit(cache=True)
+def two_product(a, b):
+    """x + y == a * b exactly, with x = fl(a * b) (Dekker's product)."""
+    x = a * b
+    ahi, alo = _split(a)
+    bhi, blo = _split(b)
+    err = x - ahi * bhi
+    err -= alo * bhi
+    err -= ahi * blo
+    return x, alo * blo - err
+
+
+@njit(cache=True)
+def diff(a, b, h):
+    """Write the exact difference a - b into h as an expansion; return its length."""
+    x, y = two_diff(a, b)
+    if y != 0.0:
+        h[0] = y
+        h[1] = x
+        return 2
+    h[0] = x
+    return 1
+
+
+@njit(cache=True)
+def add(e, elen, f, flen, h):
+    """h = e + f exactly (Shewchuk's fast_expansion_sum_zeroelim); return len(h)."""
+    ei = 0
+    fi = 0
+    enow = e[0]
+    fnow = f[0]
+    if (fnow > enow) == (fnow > -enow):
+        q = enow
+        ei += 1
+    else:
+        q = fnow
+        fi += 1
+    hi = 0
+    while ei < elen or fi < flen:
+        # take the smaller-magnitude remaining component next
+        if fi >= flen or (ei < elen and ((f[fi] > e[ei]) == (f[fi] > -e[ei]))):
+            nxt = e[ei]
+            ei += 1
+        else:
+            nxt = f[fi]
+            fi += 1
+        q, hh = two_sum(q, nxt)
+        if hh != 0.0:
+            h[hi] = hh
+            hi += 1
+    if q != 0.0 or hi == 0:
+        h[hi] = q
+        hi += 1
+    return hi
+
+
+@njit(cache=True)
+def scale(e, elen, b, h):
+    """h = e * b exactly for a double b (scale_expansion_zeroelim); return len(h)."""
+    q, hh = two_product(e[0], b)
+    hi = 0
+    if hh != 0.0:
+        h[hi] = hh
+        hi += 1
+    for i in range(1, elen):
+        p1, p0 = two_product(e[i], b)
+        s, hh = two_sum(q, p0)
+        if hh != 0.0:
+            h[hi] = hh
+            hi += 1
+        # p1 dominates s, so a fast two-sum is exact here
+        q = p1 + s
+        hh = s - (q - p1)
+        if hh != 0.0:
+            h[hi] = hh
+            hi += 1
+    if q != 0.0 or hi == 0:
+        h[hi] = q
+        hi += 1
+    return hi
+
+
+@njit(cache=True)
+def mul(e, elen, f, flen, h, t1, t2):
+    """h = e * f exactly; t1 and t2 are scratch of the same size as h (2*elen*flen)."""
+    n = scale(e, elen, f[0], h)
+    for j in range(1, flen):
+        m = scale(e, elen, f[j], t1)
+        k = add(h, n, t1, m, t2)
+        for i in range(k):
+            h[i] = t2[i]
+        n = k
+    return n
+
+
+@njit(cache=True)
+def negate(e, elen):
+    """Negate an expansion in place."""
+    for i in range(elen):
+        e[i] = -e[i]

@@ -1,0 +1,272 @@
+"""Exact geometric predicates: orientation and in-circle tests for any finite doubles.
+
+``orient2d(a, b, c)`` is +1 when a, b, c turn counter-clockwise, -1 clockwise,
+0 when collinear.  ``incircle(a, b, c, d)`` is +1 when d lies strictly inside
+the circle through a, b, c (given counter-clockwise), -1 outside, 0 on it.
+The answers are *exact*: no epsilon, no scale dependence.
+
+How (the adaptive scheme of Shewchuk, "Adaptive precision floating-point
+arithmetic and fast robust geometric predicates", 1997):
+
+1. A floating-point filter evaluates the determinant once and compares it with
+   a proven error bound; almost every call ends here.  The bound assumes no
+   underflow or overflow, so the filter only answers when the magnitudes are in
+   a safe range (this is what makes 1e-300 and 1e300 inputs right).
+2. Otherwise the determinant is recomputed exactly with expansion arithmetic
+   (``expansion.py``) after scaling all coordinates by one power of two (which
+   does not change the sign).  When the input differences are exact, as on
+   integer grids, the expansions stay one or two components long, so ties stay
+   cheap.
+3. If the coordinates of one call span more than 2**150 in magnitude (so that
+   expansion components could underflow), the sign is computed with Python
+   integers instead (a numba ``objmode`` block).  This is the rare path.
+
+``*_nb`` functions take a scratch array from ``workspace()`` and are meant for
+numba-compiled callers; the plain functions accept pairs and are for Python.
+
+>>> orient2d((0, 0), (1, 0), (0, 1))
+1
+>>> incircle((0, 0), (1, 0), (0, 1), (1, 1))   # cocircular
+0
+>>> orient2d((0.1, 0.1), (0.2, 0.2), (0.3, 0.3))   # the doubles are not exactly collinear
+-1
+"""
+from __future__ import annotations
+
+import math
+
+import numba
+import numpy as np
+from numba import njit
+
+from .expansion import EPSILON, add, diff, mul, negate
+
+__all__ = ["orient2d", "incircle", "orient2d_nb", "incircle_nb", "workspace", "WORKSPACE_SIZE"]
+
+CCW_ERRBOUND_A = (3.0 + 16.0 * EPSILON) * EPSILON
+ICC_ERRBOUND_A = (10.0 + 96.0 * EPSILON) * EPSILON
+
+# Filter safety ranges (see module docstring, step 1).
+_O_LO, _O_HI = 2.0 ** -900, 2.0 ** 1000   # orient: |detleft| + |detright|
+_I_DMAX = 2.0 ** 150                       # incircle: largest |difference|
+_I_LO = 2.0 ** -600                        # incircle: permanent
+_EXACT_MIN = 2.0 ** -150                   # exact stage: smallest scaled non-zero coordinate
+
+WORKSPACE_SIZE = 8192
+# Layout of the incircle scratch (offsets into the workspace).  Sizes are the
+# worst-case lengths: differences 2, squares and 2x2 products 8, lifts and
+# cofactors 16, lift*cofactor 512, sums of those up to 1536.
+_D = 0          # 12 slots: six 2-component differences
+_S1, _S2, _S3 = 16, 32, 48          # 16 each
+_LIFT, _COF = 64, 96                # 32 each
+_T1, _T2 = 128, 640                 # 512 each: mul scratch
+_TERM = 1152                        # 512
+_ACC, _ACC2 = 1664, 3328            # 1536 each
+_V = 4864                           # 8: scaled coordinates
+_L = 4872                           # 6: lengths of the differences (stored as floats)
+
+
+def workspace() -> np.ndarray:
+    """A scratch array for the ``*_nb`` predicates (one per thread of work)."""
+    return np.empty(WORKSPACE_SIZE, dtype=np.float64)
+
+
+# --------------------------------------------------------------------- exact python fallback
+def _orient_python(ax, ay, bx, by, cx, cy) -> int:
+    from .verify import exact_coordinates, orient_exact
+    a, b, c = exact_coordinates([(ax, ay), (bx, by), (cx, cy)])
+    return orient_exact(a, b, c)
+
+
+def _incircle_python(ax, ay, bx, by, cx, cy, dx, dy) -> int:
+    from .verify import exact_coordinates, incircle_exact
+    a, b, c, d = exact_coordinates([(ax, ay), (bx, by), (cx, cy), (dx, dy)])
+    return incircle_exact(a, b, c, d)
+
+
+# --------------------------------------------------------------------- scaling
+@njit(cache=True)
+def _scale_exponent(v):
+    """Return k with max|v| * 2**k in [0.5, 1), and whether all non-zero |v| * 2**k >= 2**-150."""
+    m = 0.0
+    for x in v:
+        m = max(m, abs(x))
+    if m == 0.0:
+        return 0, True
+    _, e = math.frexp(m)
+    k = -e
+    lo = math.ldexp(_EXACT_MIN, -k)   # threshold in unscaled units
+    for x in v:
+        if x != 0.0 and abs(x) < lo:
+            return k, False
+    return k, True
+
+
+# --------------------------------------------------------------------- orient2d
+@njit(cache=True)
+def _orient_exact(ax, ay, bx, by, cx, cy, w):
+    v = w[_V:_V + 6]
+    v[0] = ax; v[1] = ay; v[2] = bx; v[3] = by; v[4] = cx; v[5] = cy
+    k, ok = _scale_exponent(v)
+    if not ok:
+        with numba.objmode(s="int64"):
+            s = _orient_python(ax, ay, bx, by, cx, cy)
+        return s
+    for i in range(6):
+        v[i] = math.ldexp(v[i], k)
+    acx = w[0:2]; bcy = w[2:4]; acy = w[4:6]; bcx = w[6:8]
+    n1 = diff(v[0], v[4], acx)
+    n2 = diff(v[3], v[5], bcy)
+    n3 = diff(v[1], v[5], acy)
+    n4 = diff(v[2], v[4], bcx)
+    p = w[16:32]; q = w[32:48]; t1 = w[48:64]; t2 = w[64:80]; h = w[80:112]
+    np_ = mul(acx, n1, bcy, n2, p, t1, t2)
+    nq = mul(acy, n3, bcx, n4, q, t1, t2)
+    negate(q, nq)
+    nh = add(p, np_, q, nq, h)
+    top = h[nh - 1]
+    return 1 if top > 0.0 else (-1 if top < 0.0 else 0)
+
+
+@njit(cache=True, inline="always")
+def orient2d_nb(ax, ay, bx, by, cx, cy, w):
+    """Exact orientation sign of (a, b, c); ``w`` is a ``workspace()`` array."""
+    acx = ax - cx
+    bcx = bx - cx
+    acy = ay - cy
+    bcy = by - cy
+    detleft = acx * bcy
+    detright = acy * bcx
+    det = detleft - detright
+    detsum = abs(detleft) + abs(detright)
+    if detsum > _O_LO and detsum < _O_HI:
+        errbound = CCW_ERRBOUND_A * detsum
+        if det > errbound:
+            return 1
+        if -det > errbound:
+            return -1
+    return _orient_exact(ax, ay, bx, by, cx, cy, w)
+
+
+# --------------------------------------------------------------------- incircle
+@njit(cache=True)
+def _incircle_exact(ax, ay, bx, by, cx, cy, dx, dy, w):
+    v = w[_V:_V + 8]
+    v[0] = ax; v[1] = ay; v[2] = bx; v[3] = by; v[4] = cx; v[5] = cy; v[6] = dx; v[7] = dy
+    k, ok = _scale_exponent(v)
+    if not ok:
+        with numba.objmode(s="int64"):
+            s = _incircle_python(ax, ay, bx, by, cx, cy, dx, dy)
+        return s
+    for i in range(8):
+        v[i] = math.ldexp(v[i], k)
+    # differences p - d for p = a, b, c; slot j holds x (j even) or y (j odd) of point j // 2
+    dlen = w[_L:_L + 6]
+    for j in range(6):
+        dlen[j] = diff(v[j], v[6 + (j % 2)], w[_D + 2 * j:_D + 2 * j + 2])
+    t1 = w[_T1:_T1 + 512]
+    t2 = w[_T2:_T2 + 512]
+    acc = w[_ACC:_ACC + 1536]
+    acc2 = w[_ACC2:_ACC2 + 1536]
+    nacc = 0
+    for r in range(3):
+        i = r
+        j = (r + 1) % 3
+        kk = (r + 2) % 3
+        ix = w[_D + 4 * i:_D + 4 * i + 2]; nix = int(dlen[2 * i])
+        iy = w[_D + 4 * i + 2:_D + 4 * i + 4]; niy = int(dlen[2 * i + 1])
+        jx = w[_D + 4 * j:_D + 4 * j + 2]; njx = int(dlen[2 * j])
+        jy = w[_D + 4 * j + 2:_D + 4 * j + 4]; njy = int(dlen[2 * j + 1])
+        kx = w[_D + 4 * kk:_D + 4 * kk + 2]; nkx = int(dlen[2 * kk])
+        ky = w[_D + 4 * kk + 2:_D + 4 * kk + 4]; nky = int(dlen[2 * kk + 1])
+        s1 = w[_S1:_S1 + 16]; s2 = w[_S2:_S2 + 16]; s3 = w[_S3:_S3 + 16]
+        lift = w[_LIFT:_LIFT + 32]; cof = w[_COF:_COF + 32]
+        # lift = ix^2 + iy^2
+        n1 = mul(ix, nix, ix, nix, s1, t1, t2)
+        n2 = mul(iy, niy, iy, niy, s2, t1, t2)
+        nl = add(s1, n1, s2, n2, lift)
+        # cofactor = jx*ky - kx*jy
+        n1 = mul(jx, njx, ky, nky, s1, t1, t2)
+        n2 = mul(kx, nkx, jy, njy, s2, t1, t2)
+        negate(s2, n2)
+        nc = add(s1, n1, s2, n2, cof)
+        term = w[_TERM:_TERM + 512]
+        nt = mul(lift, nl, cof, nc, term, t1, t2)
+        if nacc == 0:
+            for q in range(nt):
+                acc[q] = term[q]
+            nacc = nt
+        else:
+            m = add(acc, nacc, term, nt, acc2)
+            for q in range(m):
+                acc[q] = acc2[q]
+            nacc = m
+    top = acc[nacc - 1]
+    return 1 if top > 0.0 else (-1 if top < 0.0 else 0)
+
+
+@njit(cache=True, inline="always")
+def incircle_nb(ax, ay, bx, by, cx, cy, dx, dy, w):
+    """Exact sign of d relative to the circle through CCW a, b, c (+1 inside)."""
+    adx = ax - dx
+    bdx = bx - dx
+    cdx = cx - dx
+    ady = ay - dy
+    bdy = by - dy
+    cdy = cy - dy
+    bdxcdy = bdx * cdy
+    cdxbdy = cdx * bdy
+    alift = adx * adx + ady * ady
+    cdxady = cdx * ady
+    adxcdy = adx * cdy
+    blift = bdx * bdx + bdy * bdy
+    adxbdy = adx * bdy
+    bdxady = bdx * ady
+    clift = cdx * cdx + cdy * cdy
+    det = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady)
+    permanent = ((abs(bdxcdy) + abs(cdxbdy)) * alift + (abs(cdxady) + abs(adxcdy)) * blift
+                 + (abs(adxbdy) + abs(bdxady)) * clift)
+    dmax = max(abs(adx), abs(ady), abs(bdx), abs(bdy), abs(cdx), abs(cdy))
+    if dmax < _I_DMAX and permanent > _I_LO:
+        errbound = ICC_ERRBOUND_A * permanent
+        if det > errbound:
+            return 1
+        if -det > errbound:
+            return -1
+    return _incircle_exact(ax, ay, bx, by, cx, cy, dx, dy, w)
+
+
+# --------------------------------------------------------------------- python API
+def _xy(p, name):
+    try:
+        x, y = p
+        x, y = float(x), float(y)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} must be a pair of numbers, got {p!r}") from None
+    if not (math.isfinite(x) and math.isfinite(y)):
+        raise ValueError(f"{name} = {p!r} is not finite (NaN or infinity)")
+    return x, y
+
+
+_PY_WORK = workspace()
+
+
+def orient2d(a, b, c) -> int:
+    """Exact orientation: +1 if a, b, c turn counter-clockwise, -1 clockwise, 0 collinear.
+
+    >>> orient2d((0, 0), (2, 0), (1, 0))
+    0
+    """
+    return int(orient2d_nb(*_xy(a, "a"), *_xy(b, "b"), *_xy(c, "c"), _PY_WORK))
+
+
+def incircle(a, b, c, d) -> int:
+    """Exact in-circle test: +1 if d is strictly inside the circle through a, b, c.
+
+    a, b, c must be counter-clockwise for the sign to mean inside (for a clockwise
+    triangle the sign flips; for collinear a, b, c it is the side of the line).
+
+    >>> incircle((0, 0), (2, 0), (0, 2), (1, 1))
+    1
+    """
+    return int(incircle_nb(*_xy(a, "a"), *_xy(b, "b"), *_xy(c, "c"), *_xy(d, "d"), _PY_WORK))
