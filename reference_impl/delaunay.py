@@ -35,6 +35,19 @@ __all__ = ["Delaunay"]
 _ITYPE = np.int32  # mesh arrays: half the memory traffic of int64
 
 
+def _equal_point_roots(x: np.ndarray, y: np.ndarray) -> np.ndarray:
+    """dup[i] = first index with the same coordinates as i (in sorted order), or -1."""
+    dup = np.full(len(x), -1, dtype=np.int64)
+    if len(x) == 0:
+        return dup
+    order = np.lexsort((y, x))
+    same = (x[order][1:] == x[order][:-1]) & (y[order][1:] == y[order][:-1])
+    start = np.maximum.accumulate(np.where(np.r_[True, ~same], np.arange(len(x)), 0))
+    root = order[start]
+    dup[order] = np.where(root == order, -1, root)
+    return dup
+
+
 class Delaunay:
     """Delaunay triangulation of 2D points (exact predicates, O(n log n) expected).
 
@@ -76,6 +89,8 @@ class Delaunay:
         self._flat = n < 3 or not _mesh.build(
             self._X[:n], self._Y[:n], self._tri, self._nbr, self._mark, self._stack, self._bad,
             self._ba, self._bb, self._bo, self._start_of, self._state, self._dup, self._w)
+        if self._flat:
+            self._dup[:n] = _equal_point_roots(self._X[:n], self._Y[:n])
         self._cache = {}
 
     def _grow(self) -> None:

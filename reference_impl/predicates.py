@@ -28,8 +28,8 @@ numba-compiled callers; the plain functions accept pairs and are for Python.
 1
 >>> incircle((0, 0), (1, 0), (0, 1), (1, 1))   # cocircular
 0
->>> orient2d((0.1, 0.1), (0.2, 0.2), (0.3, 0.3))   # the doubles are not exactly collinear
--1
+>>> orient2d((0.5, 0.5000000000000001), (12, 12), (24, 24))   # naive arithmetic says 0
+1
 """
 from __future__ import annotations
 

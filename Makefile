@@ -1,0 +1,34 @@
+# The course's two commands (see README.md):
+#   make demo   set everything up, then run the headless tour of the course
+#   make test   set everything up, then run the whole test suite
+# Other targets: make lab (open the lessons in JupyterLab), make bench, make setup, make clean.
+
+PYTHON ?= python3
+VENV   ?= .venv
+PY     := $(VENV)/bin/python
+STAMP  := $(VENV)/.installed
+
+.PHONY: setup demo test lab bench clean
+
+setup: $(STAMP)
+
+$(STAMP): pyproject.toml
+	$(PYTHON) -m venv $(VENV)
+	$(PY) -m pip install --quiet --upgrade pip
+	$(PY) -m pip install --quiet -e '.[dev]'
+	touch $(STAMP)
+
+demo: setup
+	$(PY) -m reference_impl demo
+
+test: setup
+	$(PY) -m pytest
+
+lab: setup
+	$(VENV)/bin/jupyter lab notebooks
+
+bench: setup
+	$(PY) benchmarks/bench_delaunay.py
+
+clean:
+	rm -rf $(VENV) build .pytest_cache .hypothesis
