@@ -1,0 +1,43 @@
+"""Input validator (Kattis convention: exit 42 = valid, 43 = invalid) for the Delaunay problems.
+
+Format: a line with n (0 <= n <= 200000), then n lines "x y" of finite decimal floats, one space,
+no other whitespace, nothing after. Run: python3 validate_points.py < case.in; echo $?
+
+Example:
+    >>> validate("2\\n0.5 1\\n-3 4e-300\\n")
+    []
+"""
+import math
+import re
+import sys
+
+NUMBER = re.compile(r"-?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
+MAX_N = 200000
+
+
+def validate(text: str) -> list[str]:
+    """Return a list of problems (empty when the input is valid)."""
+    if not text.endswith("\n"):
+        return ["the input must end with a newline"]
+    lines = text[:-1].split("\n")
+    if not re.fullmatch(r"0|[1-9]\d*", lines[0]):
+        return [f"first line must be n, got {lines[0][:40]!r}"]
+    n = int(lines[0])
+    if n > MAX_N:
+        return [f"n = {n} exceeds {MAX_N}"]
+    if len(lines) != n + 1:
+        return [f"expected {n} point lines, got {len(lines) - 1}"]
+    for k, line in enumerate(lines[1:], start=2):
+        parts = line.split(" ")
+        if len(parts) != 2 or not all(NUMBER.fullmatch(p) for p in parts):
+            return [f"line {k}: expected 'x y', got {line[:60]!r}"]
+        if not all(math.isfinite(float(p)) for p in parts):
+            return [f"line {k}: coordinates must be finite"]
+    return []
+
+
+if __name__ == "__main__":
+    problems = validate(sys.stdin.read())
+    for p in problems:
+        print(p, file=sys.stderr)
+    sys.exit(43 if problems else 42)

@@ -1,0 +1,246 @@
+"""Child side of the judge: runs INSIDE the sandbox, started as ``python -I child_bootstrap.py CONFIG``.
+
+Standard library only, and never imported by the grader itself. It
+
+1. installs an audit hook (PEP 578) that reports forbidden imports and operations (creating
+   processes, signalling other processes, sockets, reading or listing files outside the Python
+   installation and the working directory, writing outside the working directory) to the parent
+   on the control pipe *before* refusing them, so catching the exception does not hide it;
+2. reads the submission source from the control pipe and runs it (as module ``submission`` in
+   function mode, as ``__main__`` in stdio mode);
+3. function mode: serves calls of the entry function, one JSON line per request/response.
+   Results are converted to JSON-native values with exact type checks (numpy arrays and scalars
+   become lists and numbers); anything else is reported as a wrong type, never passed on.
+
+Protocol (one JSON object per line), parent -> child on fd ``ctl_in``:
+    {"source": str, "filename": str}             first line
+    {"id": int, "args": [...]}                   function mode, one per test
+child -> parent on fd ``ctl_out``:
+    {"loaded": true} | {"load_error": {...}}     after running the module body
+    {"id": int, "ok": value} | {"id": int, "error": {...}} | {"id": int, "bad_type": str}
+    {"violation": str}                           at any time
+    {"exit": int}                                stdio mode, the program ended normally
+
+Example (what the parent runs):
+    python -I grader/child_bootstrap.py '{"mode": "function", "entry": "delaunay", ...}'
+"""
+
+import json
+import linecache
+import os
+import sys
+import traceback
+import types
+
+CONFIG = json.loads(sys.argv[1])
+CTL_IN, CTL_OUT = CONFIG["ctl_in"], CONFIG["ctl_out"]
+FORBIDDEN = tuple(CONFIG["forbidden"])
+READ_ROOTS = tuple(CONFIG["read_roots"]) + (f"/proc/{os.getpid()}",)
+WRITE_ROOTS = tuple(CONFIG["write_roots"])
+SUBMISSION_FILE = CONFIG["filename"]
+
+
+class SandboxViolation(BaseException):
+    """Raised in student code for a forbidden operation (BaseException: ``except Exception`` misses it)."""
+
+
+def _send(obj):
+    data = (json.dumps(obj, allow_nan=True, separators=(",", ":")) + "\n").encode()
+    view = memoryview(data)
+    while view:
+        n = os.write(CTL_OUT, view)
+        view = view[n:]
+
+
+_reported = False
+
+
+def _violation(message):
+    global _reported
+    if not _reported:
+        _reported = True
+        try:
+            _send({"violation": message})
+        except OSError:
+            pass
+    raise SandboxViolation(message)
+
+
+def _forbidden_module(name):
+    return any(name == f or name.startswith(f + ".") for f in FORBIDDEN)
+
+
+def _under(path, roots):
+    return any(path == r or path.startswith(r.rstrip("/") + "/") for r in roots)
+
+
+def _norm(path):
+    if isinstance(path, bytes):
+        path = os.fsdecode(path)
+    if isinstance(path, int):
+        return None
+    return os.path.normpath(os.path.join(os.getcwd(), str(path)))
+
+
+_PROCESS_EVENTS = {"os.system", "os.fork", "os.forkpty", "os.exec", "os.posix_spawn", "os.spawn",
+                   "subprocess.Popen", "os.kill", "os.killpg", "signal.pthread_kill", "pty.spawn",
+                   "os.setuid", "os.setgid", "os.chroot"}
+_NET_EVENTS = {"socket.connect", "socket.bind", "socket.sendto", "socket.getaddrinfo", "socket.gethostbyname",
+               "urllib.Request", "http.client.connect", "ftplib.connect", "smtplib.connect"}
+_WRITE_FLAGS = os.O_WRONLY | os.O_RDWR | os.O_APPEND | os.O_CREAT | os.O_TRUNC
+
+
+def _audit(event, args):
+    if event == "import":
+        if _forbidden_module(args[0]):
+            _violation(f"import of forbidden module '{args[0]}'")
+    elif event == "open":
+        path = _norm(args[0])
+        if path is None:
+            return
+        mode, flags = args[1], args[2]
+        writing = (isinstance(mode, str) and any(c in mode for c in "wax+")) or (flags & _WRITE_FLAGS)
+        if writing:
+            if not _under(path, WRITE_ROOTS) and path != "/dev/null":
+                _violation(f"writing '{path}' (outside the working directory) is not allowed")
+        elif not _under(path, READ_ROOTS):
+            _violation(f"reading '{path}' (outside the working directory) is not allowed")
+    elif event in ("os.listdir", "os.scandir"):
+        path = _norm(args[0] if args and args[0] is not None else ".")
+        if path is not None and not _under(path, READ_ROOTS):
+            _violation(f"listing '{path}' (outside the working directory) is not allowed")
+    elif event in _PROCESS_EVENTS:
+        _violation(f"operation '{event}' is not allowed (no processes, signals or environment changes)")
+    elif event in _NET_EVENTS:
+        _violation(f"network operation '{event}' is not allowed")
+    elif event in ("os.remove", "os.rename", "os.rmdir", "os.mkdir", "os.chmod", "os.chown", "os.symlink",
+                   "os.link", "os.truncate", "shutil.rmtree", "os.utime"):
+        path = _norm(args[0]) if args else None
+        if path is not None and not _under(path, WRITE_ROOTS):
+            _violation(f"operation '{event}' on '{path}' is not allowed")
+
+
+def _error_info(exc):
+    tb = traceback.extract_tb(exc.__traceback__)
+    frames = [f for f in tb if f.filename == SUBMISSION_FILE] or list(tb[-1:])
+    lines = [f"line {f.lineno}, in {f.name}: {(f.line or '').strip()}" for f in frames[-4:]]
+    text = f"{type(exc).__name__}: {exc}"
+    return {"type": type(exc).__name__, "message": text[:2000], "where": lines}
+
+
+def _to_json(value, depth=0):
+    """Exact-type conversion to JSON-native data; raises TypeError naming the first bad type."""
+    t = type(value)
+    if t in (int, float, str, bool) or value is None:
+        return value
+    if depth > 20:
+        raise TypeError("nested too deeply")
+    if t in (list, tuple):
+        return [_to_json(v, depth + 1) for v in value]
+    np = sys.modules.get("numpy")
+    if np is not None:
+        if t is np.ndarray:
+            if value.dtype.kind not in "biuf":
+                raise TypeError(f"numpy array of dtype {value.dtype}")
+            return value.tolist()
+        if isinstance(value, np.generic) and t.__module__ == "numpy" and value.dtype.kind in "biuf":
+            return value.item()
+    raise TypeError(f"{t.__module__}.{t.__qualname__}".removeprefix("builtins."))
+
+
+def _load(source, as_main):
+    name = "__main__" if as_main else "submission"
+    module = types.ModuleType(name)
+    module.__file__ = SUBMISSION_FILE
+    module.__builtins__ = __builtins__
+    sys.modules[name] = module
+    linecache.cache[SUBMISSION_FILE] = (len(source), None, source.splitlines(True), SUBMISSION_FILE)
+    code = compile(source, SUBMISSION_FILE, "exec")  # SyntaxError is reported by the caller
+    exec(code, module.__dict__)
+    return module
+
+
+def _read_lines(fd):
+    buf = b""
+    while True:
+        chunk = os.read(fd, 1 << 20)
+        if not chunk:
+            if buf:
+                yield buf
+            return
+        buf += chunk
+        while b"\n" in buf:
+            line, buf = buf.split(b"\n", 1)
+            yield line
+
+
+def main():
+    lines = _read_lines(CTL_IN)
+    first = json.loads(next(lines))
+    sys.argv = [SUBMISSION_FILE]
+    sys.path[:0] = [os.getcwd()]
+    sys.addaudithook(_audit)
+    sys.setrecursionlimit(CONFIG.get("recursion_limit", 10000))
+    mode = CONFIG["mode"]
+    try:
+        module = _load(first["source"], as_main=(mode == "stdio"))
+    except SandboxViolation:
+        os._exit(0)
+    except SystemExit as exc:
+        if mode == "stdio":
+            code = exc.code if isinstance(exc.code, int) else (0 if exc.code is None else 1)
+            _flush_and_exit(code)
+        _send({"load_error": {"type": "SystemExit", "message": f"sys.exit({exc.code!r}) while loading"}})
+        os._exit(0)
+    except BaseException as exc:  # noqa: BLE001 - every student failure becomes a verdict
+        _send({"load_error": _error_info(exc)})
+        if mode == "stdio":
+            _flush_and_exit(1)
+        os._exit(0)
+    if mode == "stdio":
+        _flush_and_exit(0)
+    entry = getattr(module, CONFIG["entry"], None)
+    if not callable(entry):
+        _send({"load_error": {"type": "MissingEntry", "message": f"no function '{CONFIG['entry']}' is defined"}})
+        os._exit(0)
+    _send({"loaded": True})
+    for raw in lines:
+        request = json.loads(raw)
+        rid = request["id"]
+        try:
+            result = entry(*request["args"])
+        except SandboxViolation:
+            os._exit(0)
+        except SystemExit as exc:
+            _send({"id": rid, "error": {"type": "SystemExit", "message": f"called sys.exit({exc.code!r})"}})
+            continue
+        except BaseException as exc:  # noqa: BLE001
+            _send({"id": rid, "error": _error_info(exc)})
+            continue
+        try:
+            payload = _to_json(result)
+        except TypeError as exc:
+            _send({"id": rid, "bad_type": str(exc)})
+            continue
+        except RecursionError:
+            _send({"id": rid, "bad_type": "nested too deeply"})
+            continue
+        _send({"id": rid, "ok": payload})
+    os._exit(0)
+
+
+def _flush_and_exit(code):
+    try:
+        sys.stdout.flush()
+        sys.stderr.flush()
+    except BaseException:  # noqa: BLE001 - EFBIG from a flood is judged by the parent
+        pass
+    try:
+        _send({"exit": code})
+    except OSError:
+        pass
+    os._exit(code)
+
+
+if __name__ == "__main__":
+    main()

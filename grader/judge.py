@@ -1,0 +1,207 @@
+"""Judging one submission on one problem: run every test in the sandbox, check, give verdicts.
+
+Function mode keeps one worker process for all tests (restarted after a crash or timeout);
+stdio mode starts one process per test. The checker runs here, in the grader's process, on data
+that crossed the boundary as JSON (function mode) or text (stdio mode) and was type-checked
+first. Within a group, tests after the first failure are skipped (the group scores 0 anyway).
+
+Example:
+    >>> from grader import judge_file
+    >>> judge_file("delaunay", "solutions/delaunay/accepted_walk.py").verdict   # doctest: +SKIP
+    'AC'
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+import time
+import traceback
+from pathlib import Path
+from typing import Callable, Sequence
+
+from .problems import Problem, TestCase, load_problem
+from .runner import FunctionWorker, RunOutcome, run_stdio
+from .sandbox import Limits, Sandbox
+from .submissions import Submission, SubmissionError
+from .verdicts import JudgeResult, TestResult, Verdict
+
+PREVIEW_MAX_LINES = 24
+_CE_TYPES = {"SyntaxError", "IndentationError", "TabError", "ImportError", "ModuleNotFoundError", "MissingEntry"}
+_cover_cache: dict[tuple[str, ...], list[str]] = {}
+
+
+def installed_paths(modules: Sequence[str]) -> list[str]:
+    """Directories/files of installed forbidden modules (found on sys.path without importing them)."""
+    key = tuple(modules)
+    if key not in _cover_cache:
+        found = []
+        for mod in modules:
+            parts = mod.split(".")
+            for base in sys.path:
+                if not base or not os.path.isdir(base):
+                    continue
+                stem = os.path.join(base, *parts)
+                if os.path.isdir(stem):
+                    found.append(stem)
+                elif os.path.isfile(stem + ".py"):
+                    found.append(stem + ".py")
+                else:
+                    parent = os.path.dirname(stem)
+                    if os.path.isdir(parent):
+                        found += [os.path.join(parent, f) for f in os.listdir(parent)
+                                  if f.startswith(parts[-1] + ".") and f.endswith(".so")]
+        _cover_cache[key] = found
+    return _cover_cache[key]
+
+
+def preview(test: TestCase) -> str:
+    """The test's input for the student when it is small enough to read."""
+    lines = test.input_text.splitlines()
+    return test.input_text if len(lines) <= PREVIEW_MAX_LINES else ""
+
+
+def _verdict_for(outcome: RunOutcome) -> tuple[Verdict, str]:
+    where = ("\n  " + "\n  ".join(outcome.where)) if outcome.where else ""
+    status = outcome.status
+    if status == "violation":
+        return Verdict.SV, outcome.message
+    if status == "timeout":
+        return Verdict.TLE, outcome.message
+    if status == "memory":
+        return Verdict.MLE, (outcome.message or "MemoryError") + where
+    if status == "output_limit":
+        return Verdict.OLE, outcome.message
+    if status == "bad_type":
+        return Verdict.PE, outcome.message
+    if status == "load_error":
+        kind = outcome.message.split(":", 1)[0]
+        verdict = Verdict.CE if kind in _CE_TYPES or outcome.message.startswith("no function") else Verdict.RE
+        return verdict, outcome.message + where
+    if status in ("error", "crash"):
+        return Verdict.RE, outcome.message + where
+    return Verdict.JE, f"unexpected run status {status!r}"
+
+
+class Judge:
+    """Judges submissions for one problem; reusable (keeps the parsed tests)."""
+
+    def __init__(self, problem: Problem | str, hide: Sequence[str | os.PathLike] = ()):
+        self.problem = load_problem(problem) if isinstance(problem, str) else problem
+        self.hide = list(hide)
+        self.tests = self.problem.tests()
+        self.limits = Limits(cpu_s=self.problem.time_limit, wall_s=2 * self.problem.time_limit + 1,
+                             memory_mb=self.problem.memory_mb, output_mb=self.problem.output_mb)
+        self.cover = installed_paths([m for m in self.problem.forbidden if m not in ("reference_impl", "grader")])
+        self._args = [None] * len(self.tests)
+        self._answers = [None] * len(self.tests)
+
+    def _test_data(self, k: int):
+        if self._args[k] is None:
+            chk, t = self.problem.checker, self.tests[k]
+            self._args[k] = chk.read_input(t.input_text)
+            self._answers[k] = chk.read_answer(t.answer_text) if t.answer_text else None
+        return self._args[k], self._answers[k]
+
+    def judge_path(self, path: str | Path, on_test: Callable[[TestResult], None] | None = None,
+                   skip: set[str] = frozenset()) -> JudgeResult:
+        try:
+            sub = Submission.from_path(path)
+        except SubmissionError as exc:
+            return self._all(str(path), Verdict.CE, str(exc), "none")
+        return self.judge(sub, str(path), on_test, skip)
+
+    def _all(self, name: str, verdict: Verdict, message: str, mode: str,
+             on_test: Callable[[TestResult], None] | None = None) -> JudgeResult:
+        tests = []
+        for t in self.tests:
+            r = TestResult(t.name, t.group, verdict, 0.0, 0.0, message)
+            tests.append(r)
+            if on_test:
+                on_test(r)
+        return JudgeResult(self.problem.id, name, tests, self.problem.group_points, mode=mode)
+
+    def judge(self, sub: Submission, name: str = "submission.py",
+              on_test: Callable[[TestResult], None] | None = None, skip: set[str] = frozenset()) -> JudgeResult:
+        """Judge ``sub``; ``on_test`` is called after each test; tests named in ``skip`` are not run
+        (their results are already known, e.g. stored by an interrupted batch)."""
+        t0 = time.monotonic()
+        syntax = sub.syntax_error()
+        if syntax:
+            return self._all(name, Verdict.CE, syntax, "none", on_test)
+        mode = sub.mode(self.problem.entry)
+        if mode == "missing":
+            return self._all(name, Verdict.CE, sub.missing_entry_message(self.problem.entry), mode, on_test)
+        results: list[TestResult] = []
+        failed_groups: set[str] = set()
+        load_failure: tuple[Verdict, str] | None = None
+        with Sandbox(self.limits, hide=self.hide, cover=self.cover) as box:
+            worker = None
+            if mode == "function":
+                budget = self.problem.time_limit * len(self.tests) + 30
+                worker = FunctionWorker(box, sub.source, self.problem.entry, self.problem.forbidden,
+                                        filename=sub.filename, total_cpu_s=budget)
+            try:
+                for k, test in enumerate(self.tests):
+                    if test.name in skip:
+                        continue
+                    if load_failure is not None:
+                        r = TestResult(test.name, test.group, load_failure[0], 0.0, 0.0, load_failure[1])
+                    elif test.group in failed_groups:
+                        r = TestResult(test.name, test.group, Verdict.SKIPPED, message="an earlier test of this group failed")
+                    else:
+                        r = self._run_one(box, worker, sub, k)
+                        if worker is not None and worker.load_failure is not None and r.verdict in (Verdict.CE, Verdict.SV):
+                            load_failure = (r.verdict, r.message)
+                    if r.verdict not in (Verdict.AC, Verdict.SKIPPED):
+                        failed_groups.add(test.group)
+                    results.append(r)
+                    if on_test:
+                        on_test(r)
+            finally:
+                if worker is not None:
+                    worker.stop()
+        result = JudgeResult(self.problem.id, name, results, self.problem.group_points, mode=mode)
+        result.judge_time_s = time.monotonic() - t0
+        return result
+
+    def _run_one(self, box: Sandbox, worker: FunctionWorker | None, sub: Submission, k: int) -> TestResult:
+        test = self.tests[k]
+        chk = self.problem.checker
+        try:
+            args, expected = self._test_data(k)
+            if worker is not None:
+                outcome = worker.call(args, self.problem.time_limit)
+            else:
+                outcome = run_stdio(box, sub.source, test.input_text, self.problem.time_limit,
+                                    self.problem.forbidden, filename=sub.filename)
+            r = TestResult(test.name, test.group, Verdict.JE, outcome.time_s, round(outcome.memory_mb, 1))
+            if outcome.status == "ok":
+                try:
+                    if worker is not None:
+                        answer = chk.from_result(outcome.value, args)
+                    else:
+                        answer = chk.read_output(outcome.value, args)
+                except chk.PresentationError as exc:
+                    r.verdict, r.message = Verdict.PE, str(exc)
+                else:
+                    ok, message = chk.check(args, answer, expected)
+                    r.verdict, r.message = (Verdict.AC, "") if ok else (Verdict.WA, message)
+            else:
+                r.verdict, r.message = _verdict_for(outcome)
+        except Exception as exc:  # noqa: BLE001 - only the judge's own code runs here
+            r = TestResult(test.name, test.group, Verdict.JE, 0.0, 0.0,
+                           f"judge error: {type(exc).__name__}: {exc}\n{traceback.format_exc(limit=3)}")
+        if r.verdict not in (Verdict.AC, Verdict.SKIPPED):
+            r.input_preview = preview(test)
+        return r
+
+
+def judge_file(problem: str | Problem, path: str | Path, hide: Sequence[str] = ()) -> JudgeResult:
+    """Judge one file (``.py`` or ``.ipynb``) on one problem.
+
+    >>> judge_file("delaunay", "solutions/delaunay/accepted_walk.py").score   # doctest: +SKIP
+    100
+    """
+    path = Path(path)
+    return Judge(problem, hide=[*hide, str(path.resolve().parent)]).judge_path(path)

@@ -1,0 +1,243 @@
+"""Problem packages: load, validate, list, and materialise their tests.
+
+A problem is a directory ``assignments/<id>/`` in the Kattis layout (``problem.yaml``,
+``statement/``, ``data/sample``, ``generators/``, ``input_validators/``, ``output_validators/``)
+plus ``course.yaml`` with the grader's settings (entry function, forbidden modules, groups with
+points and generated cases). Hidden tests are generated with a fixed seed, their answers come
+from ``reference_impl`` (in the grader's process), and they are cached under
+``<checkout>/.cache/grader/`` keyed by a digest of the package.
+
+Example:
+    >>> p = load_problem("delaunay")                        # doctest: +SKIP
+    >>> [g.name for g in p.groups][:2], p.entry
+    (['sample', 'tiny'], 'delaunay')
+"""
+
+from __future__ import annotations
+
+import hashlib
+import importlib.util
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+from dataclasses import dataclass, field
+from functools import cached_property
+from pathlib import Path
+from types import ModuleType
+from typing import Any
+
+import yaml
+
+REPO = Path(__file__).resolve().parent.parent
+ALWAYS_FORBIDDEN = ("reference_impl", "grader")
+
+
+def problems_root() -> Path:
+    """Where problems live: ``$GRADER_PROBLEMS`` or ``<checkout>/assignments``."""
+    return Path(os.environ.get("GRADER_PROBLEMS", REPO / "assignments"))
+
+
+def cache_root() -> Path:
+    """Where generated tests are cached: ``$GRADER_CACHE`` or ``<checkout>/.cache/grader``."""
+    return Path(os.environ.get("GRADER_CACHE", REPO / ".cache" / "grader"))
+
+
+@dataclass
+class Group:
+    name: str
+    points: int
+    cases: list[dict] = field(default_factory=list)
+    data: str | None = None  # a directory of committed .in/.ans files
+
+
+@dataclass
+class TestCase:
+    """One test: its input text and the reference answer text (parent side only)."""
+
+    name: str
+    group: str
+    input_text: str
+    answer_text: str
+
+
+def _load_module(path: Path, name: str) -> ModuleType:
+    spec = importlib.util.spec_from_file_location(name, path)
+    if spec is None or spec.loader is None:
+        raise ValueError(f"cannot load {path}")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+@dataclass
+class Problem:
+    """A loaded problem package; see the module docstring."""
+
+    id: str
+    path: Path
+    title: str
+    time_limit: float
+    memory_mb: int
+    output_mb: int
+    entry: str
+    forbidden: tuple[str, ...]
+    groups: list[Group]
+    checker_path: Path
+    generator_path: Path | None
+    seed: int
+    timed: dict
+
+    @classmethod
+    def load(cls, path: str | Path) -> "Problem":
+        path = Path(path)
+        meta_file, course_file = path / "problem.yaml", path / "course.yaml"
+        for f in (meta_file, course_file):
+            if not f.is_file():
+                raise ValueError(f"problem {path.name!r}: missing {f.name}")
+        meta = yaml.safe_load(meta_file.read_text()) or {}
+        course = yaml.safe_load(course_file.read_text()) or {}
+        limits = meta.get("limits") or {}
+        name = meta.get("name", path.name)
+        groups = []
+        for g in course.get("groups") or []:
+            if "name" not in g or "points" not in g:
+                raise ValueError(f"problem {path.name!r}: every group needs a name and points, got {g!r}")
+            groups.append(Group(str(g["name"]), int(g["points"]), list(g.get("cases") or []), g.get("data")))
+        if "entry" not in course:
+            raise ValueError(f"problem {path.name!r}: course.yaml needs 'entry' (the function students define)")
+        forbidden = tuple(dict.fromkeys([*ALWAYS_FORBIDDEN, *(course.get("forbidden") or [])]))
+        return cls(
+            id=path.name, path=path, title=name if isinstance(name, str) else name.get("en", path.name),
+            time_limit=float(limits.get("time_limit", 2.0)), memory_mb=int(limits.get("memory", 1024)),
+            output_mb=int(limits.get("output", 16)), entry=str(course["entry"]), forbidden=forbidden,
+            groups=groups, checker_path=path / course.get("checker", "output_validators/checker.py"),
+            generator_path=(path / course["generator"]) if course.get("generator") else None,
+            seed=int(course.get("seed", 0)), timed=dict(course.get("timed") or {}),
+        )
+
+    # -- validation -----------------------------------------------------------------------
+    def validate(self) -> list[str]:
+        """Structural problems of the package (an empty list when it is sound)."""
+        errors = []
+        if not (self.path / "statement" / "problem.en.md").is_file():
+            errors.append("statement/problem.en.md is missing")
+        if not self.checker_path.is_file():
+            errors.append(f"checker {self.checker_path} is missing")
+        if not list((self.path / "input_validators").glob("*")):
+            errors.append("input_validators/ is empty")
+        names = [g.name for g in self.groups]
+        if len(set(names)) != len(names):
+            errors.append("group names repeat")
+        for g in self.groups:
+            if g.data and not (self.path / g.data).is_dir():
+                errors.append(f"group {g.name}: data directory {g.data} is missing")
+            if g.cases and self.generator_path is None:
+                errors.append(f"group {g.name}: generated cases but no generator")
+            if not g.cases and not g.data:
+                errors.append(f"group {g.name}: no tests")
+        for attr in ("read_input", "from_result", "read_output", "check", "PresentationError"):
+            if self.checker_path.is_file() and not hasattr(self.checker, attr):
+                errors.append(f"checker lacks {attr}")
+        return errors
+
+    def validate_inputs(self) -> list[str]:
+        """Run the package's input validators on every test input (Kattis: exit 42 = valid)."""
+        errors = []
+        validators = sorted(p for p in (self.path / "input_validators").rglob("*.py"))
+        for t in self.tests():
+            for v in validators:
+                r = subprocess.run([sys.executable, str(v)], input=t.input_text, text=True, capture_output=True)
+                if r.returncode != 42:
+                    errors.append(f"{t.name}: {v.name} rejected it: {r.stderr.strip()[:200]}")
+        return errors
+
+    # -- modules --------------------------------------------------------------------------
+    @cached_property
+    def checker(self) -> ModuleType:
+        return _load_module(self.checker_path, f"_checker_{self.id.replace('-', '_')}")
+
+    @cached_property
+    def generator(self) -> ModuleType:
+        if self.generator_path is None:
+            raise ValueError(f"problem {self.id!r} has no generator")
+        return _load_module(self.generator_path, f"_generator_{self.id.replace('-', '_')}")
+
+    @property
+    def group_points(self) -> dict[str, int]:
+        return {g.name: g.points for g in self.groups}
+
+    # -- tests ----------------------------------------------------------------------------
+    def digest(self) -> str:
+        h = hashlib.sha256()
+        for f in sorted(p for p in self.path.rglob("*") if p.is_file() and "__pycache__" not in p.parts):
+            h.update(str(f.relative_to(self.path)).encode())
+            h.update(f.read_bytes())
+        return h.hexdigest()[:16]
+
+    def tests(self) -> list[TestCase]:
+        """All tests in judging order: groups as listed, cases as listed."""
+        if "_tests" not in self.__dict__:
+            self.__dict__["_tests"] = self._load_tests()
+        return self.__dict__["_tests"]
+
+    def _load_tests(self) -> list[TestCase]:
+        out: list[TestCase] = []
+        cache = None
+        for g in self.groups:
+            if g.data:
+                for f in sorted((self.path / g.data).glob("*.in")):
+                    ans = f.with_suffix(".ans")
+                    out.append(TestCase(f"{g.name}/{f.stem}", g.name, f.read_text(),
+                                        ans.read_text() if ans.exists() else ""))
+            if g.cases:
+                cache = cache or self._materialise()
+                for k in range(len(g.cases)):
+                    stem = cache / g.name / f"{k + 1:02d}"
+                    out.append(TestCase(f"{g.name}/{k + 1:02d}", g.name, stem.with_suffix(".in").read_text(),
+                                        stem.with_suffix(".ans").read_text()))
+        return out
+
+    def _materialise(self) -> Path:
+        """Generate hidden tests once (atomic rename into the cache) and return their directory."""
+        target = cache_root() / self.id / self.digest()
+        if target.is_dir():
+            return target
+        target.parent.mkdir(parents=True, exist_ok=True)
+        tmp = Path(tempfile.mkdtemp(dir=target.parent, prefix=".tmp-"))
+        try:
+            for g in self.groups:
+                (tmp / g.name).mkdir()
+                for k, case in enumerate(g.cases):
+                    args = [self.generator.generate(case, self.seed + 1000 * k + sum(map(ord, g.name)))]
+                    stem = tmp / g.name / f"{k + 1:02d}"
+                    stem.with_suffix(".in").write_text(self.checker.write_input(args))
+                    stem.with_suffix(".ans").write_text(self.checker.write_output(self.generator.solve(*args)))
+            try:
+                os.rename(tmp, target)
+            except OSError:  # another process won the race
+                shutil.rmtree(tmp, ignore_errors=True)
+        except BaseException:
+            shutil.rmtree(tmp, ignore_errors=True)
+            raise
+        return target
+
+    def parse_args(self, test: TestCase) -> list[Any]:
+        return self.checker.read_input(test.input_text)
+
+
+def list_problems(root: str | Path | None = None) -> list[Problem]:
+    """Every problem package under ``root`` (default :func:`problems_root`), sorted by id."""
+    root = Path(root) if root else problems_root()
+    return [Problem.load(d) for d in sorted(root.iterdir()) if (d / "problem.yaml").is_file() and (d / "course.yaml").is_file()]
+
+
+def load_problem(problem_id: str, root: str | Path | None = None) -> Problem:
+    """Load one problem by id; ``ValueError`` naming the known ids when it does not exist."""
+    root = Path(root) if root else problems_root()
+    path = root / problem_id
+    if not (path / "problem.yaml").is_file():
+        known = ", ".join(p.id for p in list_problems(root)) or "none"
+        raise ValueError(f"unknown problem {problem_id!r}; known problems: {known}")
+    return Problem.load(path)

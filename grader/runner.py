@@ -1,0 +1,444 @@
+"""Parent side of running student code: a persistent function-mode worker and one-shot stdio runs.
+
+Both return a :class:`RunOutcome` (raw facts: what came back, how long, how much memory, how it
+ended); :mod:`grader.judge` turns outcomes into verdicts. Nothing here trusts the child: replies
+are read with bounded, non-blocking reads under a wall-clock deadline, parsed as JSON only, and
+time and memory are measured by the parent from ``/proc`` and ``wait4``.
+
+Example:
+    >>> with Sandbox(Limits()) as box:                                   # doctest: +SKIP
+    ...     w = FunctionWorker(box, "def f(x): return x", "f", forbidden=[])
+    ...     w.call([3], time_limit=1.0).value
+    3
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import select
+import signal
+import sys
+import time
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, Sequence
+
+from .sandbox import Sandbox, python_roots
+
+#: The child's program, passed with ``-c`` (the grader's directory is not visible in the jail).
+BOOTSTRAP_SOURCE = Path(__file__).with_name("child_bootstrap.py").read_text()
+CLK_TCK = os.sysconf("SC_CLK_TCK")
+MAX_REPLY_BYTES = 64 << 20
+
+
+@dataclass
+class RunOutcome:
+    """What happened in one run. ``status`` is one of: ok, error, bad_type, violation, timeout,
+    crash, output_limit, memory, load_error, exit (stdio normal end)."""
+
+    status: str
+    value: Any = None
+    message: str = ""
+    time_s: float = 0.0
+    memory_mb: float = 0.0
+    where: tuple[str, ...] = ()
+
+
+def _cpu_seconds(pid: int) -> float:
+    try:
+        with open(f"/proc/{pid}/stat", "rb") as f:
+            fields = f.read().rsplit(b")", 1)[1].split()
+        ticks = (int(fields[11]) + int(fields[12])) / CLK_TCK
+        with open(f"/proc/{pid}/schedstat", "rb") as f:
+            precise = int(f.read().split()[0]) / 1e9
+        return max(ticks, precise)
+    except (OSError, IndexError, ValueError):
+        return 0.0
+
+
+def _peak_rss_mb(pid: int) -> float:
+    try:
+        with open(f"/proc/{pid}/status", "rb") as f:
+            for line in f:
+                if line.startswith(b"VmHWM:"):
+                    return int(line.split()[1]) / 1024
+    except OSError:
+        pass
+    return 0.0
+
+
+def _reset_peak(pid: int) -> None:
+    try:
+        with open(f"/proc/{pid}/clear_refs", "w") as f:
+            f.write("5")
+    except OSError:
+        pass
+
+
+def _describe_signal(sig: int) -> str:
+    try:
+        name = signal.Signals(sig).name
+    except ValueError:
+        name = f"signal {sig}"
+    hint = {"SIGSEGV": " (segmentation fault: very deep recursion?)", "SIGABRT": " (aborted)",
+            "SIGXCPU": " (CPU time limit)", "SIGKILL": " (killed)"}.get(name, "")
+    return f"killed by {name}{hint}"
+
+
+class _Child:
+    """A started child with its control pipes; reads replies with a deadline."""
+
+    def __init__(self, box: Sandbox, config: dict, source: str, stdin: int, stdout: int, stderr: int,
+                 cpu_s: float):
+        self.box = box
+        c_in_r, self.ctl_in = os.pipe()
+        self.ctl_out, c_out_w = os.pipe()
+        config = dict(config, ctl_in=c_in_r, ctl_out=c_out_w)
+        argv = [sys.executable, "-I", "-c", BOOTSTRAP_SOURCE, json.dumps(config)]
+        try:
+            self.proc = box.spawn(argv, stdin, stdout, stderr, pass_fds=(c_in_r, c_out_w), cpu_s=cpu_s)
+        finally:
+            os.close(c_in_r)
+            os.close(c_out_w)
+        self.pid = self.proc.pid
+        self.pidfd = os.pidfd_open(self.pid)
+        os.set_blocking(self.ctl_in, False)
+        os.set_blocking(self.ctl_out, False)
+        self.buf = b""
+        self.replies: list[dict] = []
+        self.exit_status: int | None = None
+        self.rusage = None
+        self.pending = (json.dumps({"source": source, "filename": config["filename"]}) + "\n").encode()
+        self.violation: str | None = None
+        self.bad_reply: str | None = None
+
+    def send(self, obj: dict) -> None:
+        self.pending += (json.dumps(obj, allow_nan=True, separators=(",", ":")) + "\n").encode()
+
+    def wait_reply(self, deadline: float, want: str | None = None) -> dict | None:
+        """Pump I/O until a reply (with key ``want`` or any key if None) arrives, the child ends,
+        or the deadline passes. Returns the reply or None."""
+        while True:
+            for i, r in enumerate(self.replies):
+                if "violation" in r:
+                    self.violation = self.violation or str(r["violation"])[:500]
+                    return r
+                if want is None or want in r:
+                    return self.replies.pop(i)
+            if self.exit_status is not None and self.ctl_out < 0:
+                return None
+            left = deadline - time.monotonic()
+            if left <= 0:
+                return None
+            poller = select.poll()
+            if self.pending and self.ctl_in >= 0:
+                poller.register(self.ctl_in, select.POLLOUT)
+            if self.ctl_out >= 0:
+                poller.register(self.ctl_out, select.POLLIN)
+            if self.exit_status is None:
+                poller.register(self.pidfd, select.POLLIN)
+            for fd, ev in poller.poll(max(1, int(left * 1000))):
+                if fd == self.ctl_in:
+                    try:
+                        n = os.write(self.ctl_in, self.pending[: 1 << 16])
+                        self.pending = self.pending[n:]
+                    except BlockingIOError:
+                        pass
+                    except OSError:  # child closed its end
+                        self.pending = b""
+                elif fd == self.ctl_out:
+                    self._read()
+                elif fd == self.pidfd:
+                    self._reap()
+                    self._read()
+
+    def _read(self) -> None:
+        if self.ctl_out < 0:
+            return
+        try:
+            chunk = os.read(self.ctl_out, 1 << 20)
+        except BlockingIOError:
+            return
+        if not chunk:
+            os.close(self.ctl_out)
+            self.ctl_out = -1
+            return
+        self.buf += chunk
+        if len(self.buf) > MAX_REPLY_BYTES:
+            self.bad_reply = "output_limit"
+            self.buf = b""
+            self.replies.append({"output_limit": True})
+            return
+        while b"\n" in self.buf:
+            line, self.buf = self.buf.split(b"\n", 1)
+            try:
+                obj = json.loads(line)
+            except (ValueError, RecursionError):
+                obj = {"garbled": line[:200].decode(errors="replace")}
+            if not isinstance(obj, dict):
+                obj = {"garbled": str(obj)[:200]}
+            self.replies.append(obj)
+
+    def _reap(self) -> None:
+        if self.exit_status is None:
+            try:
+                _, status, self.rusage = os.wait4(self.pid, os.WNOHANG)
+            except ChildProcessError:
+                status = 0
+            else:
+                if _ == 0:
+                    return
+            self.exit_status = os.waitstatus_to_exitcode(status)
+            self.proc.returncode = self.exit_status
+
+    def kill(self) -> None:
+        if self.exit_status is None:
+            try:
+                os.killpg(self.pid, signal.SIGKILL)
+            except OSError:
+                pass
+        self.box.kill_all()
+        if self.exit_status is None:
+            _, status, self.rusage = os.wait4(self.pid, 0)
+            self.exit_status = os.waitstatus_to_exitcode(status)
+            self.proc.returncode = self.exit_status
+        self.close()
+
+    def close(self) -> None:
+        for name in ("ctl_in", "ctl_out", "pidfd"):
+            fd = getattr(self, name)
+            if fd >= 0:
+                os.close(fd)
+                setattr(self, name, -1)
+
+    def drain_after_exit(self, seconds: float = 0.5) -> None:
+        """After the child exited, read what is left on the pipe (grandchildren may hold it)."""
+        end = time.monotonic() + seconds
+        while self.ctl_out >= 0 and time.monotonic() < end:
+            r, _, _ = select.select([self.ctl_out], [], [], max(0.0, end - time.monotonic()))
+            if not r:
+                break
+            self._read()
+
+
+def _child_config(box: Sandbox, mode: str, entry: str, forbidden: Sequence[str], filename: str) -> dict:
+    work = box.child_workdir
+    read_roots = python_roots() + [work, "/dev/null", "/dev/urandom", "/dev/zero", "/proc/self",
+                                   "/usr/share/zoneinfo", "/etc/localtime"]
+    return {"mode": mode, "entry": entry, "forbidden": list(forbidden), "filename": filename,
+            "read_roots": read_roots, "write_roots": [work]}
+
+
+def _classify_death(child: _Child, cpu_limit: float, memory_mb: float, limit_mb: int) -> RunOutcome:
+    code = child.exit_status
+    if code is not None and code < 0:
+        sig = -code
+        if sig == signal.SIGXCPU:
+            return RunOutcome("timeout", message="CPU time limit exceeded")
+        if sig == signal.SIGKILL and memory_mb >= 0.9 * limit_mb:
+            return RunOutcome("memory", message="killed near the memory limit", memory_mb=memory_mb)
+        return RunOutcome("crash", message=_describe_signal(sig), memory_mb=memory_mb)
+    return RunOutcome("crash", message=f"the process exited with code {code} during the test", memory_mb=memory_mb)
+
+
+def _output_overflow(box: Sandbox, paths: Sequence[str]) -> bool:
+    limit = box.limits.output_mb << 20
+    return any(os.path.exists(p) and os.path.getsize(p) >= limit for p in paths)
+
+
+def _error_outcome(err: dict, time_s: float = 0.0, memory_mb: float = 0.0) -> RunOutcome:
+    kind = str(err.get("type", "Error"))
+    msg = str(err.get("message", kind))[:2000]
+    where = tuple(str(w) for w in err.get("where", []) if isinstance(w, str))[:4]
+    status = "memory" if kind == "MemoryError" else "error"
+    return RunOutcome(status, message=msg, time_s=time_s, memory_mb=memory_mb, where=where)
+
+
+class FunctionWorker:
+    """One worker process per submission; reused across tests, restarted after a crash or timeout."""
+
+    def __init__(self, box: Sandbox, source: str, entry: str, forbidden: Sequence[str],
+                 filename: str = "submission.py", load_timeout: float = 10.0, total_cpu_s: float = 60.0):
+        self.box, self.source, self.entry = box, source, entry
+        self.config = _child_config(box, "function", entry, forbidden, filename)
+        self.load_timeout = load_timeout
+        self.total_cpu_s = total_cpu_s
+        self.child: _Child | None = None
+        self.out_paths = [os.path.join(box.private_dir, n) for n in ("stdout.txt", "stderr.txt")]
+        self.load_failure: RunOutcome | None = None
+        self._next_id = 0
+        self.starts = 0
+
+    def start(self) -> RunOutcome | None:
+        """Start the worker and load the submission; returns a failure outcome or None."""
+        self.stop()
+        fds = [os.open(p, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o600) for p in self.out_paths]
+        null = os.open(os.devnull, os.O_RDONLY)
+        try:
+            self.child = _Child(self.box, self.config, self.source, null, fds[0], fds[1], self.total_cpu_s)
+        finally:
+            for fd in (*fds, null):
+                os.close(fd)
+        self.starts += 1
+        t0 = time.monotonic()
+        reply = self.child.wait_reply(t0 + self.load_timeout, want="loaded")
+        outcome = None
+        if reply is None and self.child.exit_status is None:
+            outcome = RunOutcome("timeout", message=f"loading the submission took over {self.load_timeout:g} s")
+        elif reply is None:
+            self.child.drain_after_exit()
+            reply = next((r for r in self.child.replies if "load_error" in r or "violation" in r), None)
+        if outcome is None and reply is not None and "violation" in reply:
+            outcome = RunOutcome("violation", message=str(reply["violation"])[:500])
+        elif outcome is None and reply is not None and "load_error" in reply:
+            err = reply["load_error"] if isinstance(reply["load_error"], dict) else {}
+            outcome = _error_outcome(err)
+            outcome.status = "memory" if outcome.status == "memory" else "load_error"
+        elif outcome is None and reply is None:
+            outcome = _classify_death(self.child, self.total_cpu_s, 0.0, self.box.limits.memory_mb)
+            outcome.message = "while loading: " + outcome.message
+        if outcome is not None:
+            if _output_overflow(self.box, self.out_paths):
+                outcome = RunOutcome("output_limit", message="too much output while loading")
+            self.stop()
+            self.load_failure = outcome
+        return outcome
+
+    def stop(self) -> None:
+        if self.child is not None:
+            self.child.kill()
+            self.child = None
+
+    def call(self, args: list, time_limit: float) -> RunOutcome:
+        """Run the entry function on ``args`` (JSON-native) under ``time_limit`` CPU seconds."""
+        if self.child is None or self.child.exit_status is not None:
+            failure = self.start()
+            if failure is not None:
+                return failure
+        child = self.child
+        assert child is not None
+        self._next_id += 1
+        rid = self._next_id
+        _reset_peak(child.pid)
+        cpu0 = _cpu_seconds(child.pid)
+        wall0 = time.monotonic()
+        child.send({"id": rid, "args": args})
+        wall_limit = 2 * time_limit + 1.0
+        deadline = wall0 + wall_limit
+        cpu_exceeded = False
+        while True:
+            reply = child.wait_reply(min(time.monotonic() + 0.2, deadline), want="id")
+            if reply is not None:
+                if "violation" in reply or "output_limit" in reply or reply.get("id") == rid:
+                    break
+                continue  # a stale or forged reply (wrong id) is ignored
+            if child.exit_status is not None or time.monotonic() >= deadline:
+                break
+            if _cpu_seconds(child.pid) - cpu0 > time_limit + 0.05:
+                cpu_exceeded = True
+                break
+        wall = time.monotonic() - wall0
+        cpu = _cpu_seconds(child.pid) - cpu0 if child.exit_status is None else wall
+        mem = _peak_rss_mb(child.pid)
+        time_s = round(max(cpu, 0.0), 4)
+        overflow = _output_overflow(self.box, self.out_paths)
+        if reply is not None and "violation" in reply:
+            self.stop()
+            return RunOutcome("violation", message=str(reply["violation"])[:500], time_s=time_s, memory_mb=mem)
+        if overflow or (reply is not None and "output_limit" in reply):
+            self.stop()
+            return RunOutcome("output_limit", message=f"more than {self.box.limits.output_mb} MiB of output",
+                              time_s=time_s, memory_mb=mem)
+        if reply is None:
+            if cpu_exceeded:
+                self.stop()
+                return RunOutcome("timeout", message=f"over {time_limit:g} s of CPU time (stopped)",
+                                  time_s=max(time_s, time_limit), memory_mb=mem)
+            if child.exit_status is None:
+                self.stop()
+                return RunOutcome("timeout", message=f"no answer within {wall_limit:g} s of wall time",
+                                  time_s=max(time_s, time_limit), memory_mb=mem)
+            child.drain_after_exit()
+            late = [r for r in child.replies if "violation" in r]
+            if late:
+                self.stop()
+                return RunOutcome("violation", message=str(late[0]["violation"])[:500], time_s=time_s)
+            outcome = _classify_death(child, self.total_cpu_s, mem, self.box.limits.memory_mb)
+            outcome.time_s = time_s
+            self.stop()
+            return outcome
+        if time_s > time_limit:
+            return RunOutcome("timeout", message=f"used {time_s:.2f} s of CPU time (limit {time_limit:g} s)",
+                              time_s=time_s, memory_mb=mem)
+        if "error" in reply:
+            err = reply["error"] if isinstance(reply["error"], dict) else {}
+            return _error_outcome(err, time_s, mem)
+        if "bad_type" in reply:
+            return RunOutcome("bad_type", message=f"returned a value of type {str(reply['bad_type'])[:200]}",
+                              time_s=time_s, memory_mb=mem)
+        if "ok" not in reply:
+            return RunOutcome("bad_type", message="the worker sent an unreadable answer", time_s=time_s, memory_mb=mem)
+        return RunOutcome("ok", value=reply["ok"], time_s=time_s, memory_mb=mem)
+
+
+def run_stdio(box: Sandbox, source: str, input_text: str, time_limit: float, forbidden: Sequence[str],
+              filename: str = "submission.py") -> RunOutcome:
+    """Run the submission once as a program with ``input_text`` on stdin; output in ``.value``."""
+    config = _child_config(box, "stdio", "", forbidden, filename)
+    in_path = os.path.join(box.private_dir, "input.txt")
+    out_path, err_path = (os.path.join(box.private_dir, n) for n in ("stdout.txt", "stderr.txt"))
+    with open(in_path, "w") as f:
+        f.write(input_text)
+    fin = os.open(in_path, os.O_RDONLY)
+    fout = os.open(out_path, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o600)
+    ferr = os.open(err_path, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o600)
+    try:
+        child = _Child(box, config, source, fin, fout, ferr, time_limit + 1)
+    finally:
+        for fd in (fin, fout, ferr):
+            os.close(fd)
+    wall_limit = 2 * time_limit + 1.0
+    deadline = time.monotonic() + wall_limit
+    reply = None
+    cpu_exceeded = False
+    while child.exit_status is None and time.monotonic() < deadline:
+        reply = child.wait_reply(min(time.monotonic() + 0.2, deadline), want="__never__")
+        if reply is not None and "violation" in reply:
+            break
+        if child.exit_status is None and _cpu_seconds(child.pid) > time_limit + 0.05:
+            cpu_exceeded = True
+            break
+    timed_out = cpu_exceeded or (child.exit_status is None and (reply is None or "violation" not in reply))
+    child.kill() if child.exit_status is None else None
+    child.drain_after_exit(0.2)
+    box.kill_all()
+    child.close()
+    ru = child.rusage
+    cpu = (ru.ru_utime + ru.ru_stime) if ru is not None else 0.0
+    mem = (ru.ru_maxrss / 1024) if ru is not None else 0.0
+    time_s = round(cpu, 4)
+    violation = child.violation or next((r["violation"] for r in child.replies if "violation" in r), None)
+    if violation:
+        return RunOutcome("violation", message=str(violation)[:500], time_s=time_s, memory_mb=mem)
+    if _output_overflow(box, [out_path, err_path]):
+        return RunOutcome("output_limit", message=f"more than {box.limits.output_mb} MiB of output",
+                          time_s=time_s, memory_mb=mem)
+    if timed_out or cpu > time_limit or (child.exit_status or 0) == -signal.SIGXCPU:
+        return RunOutcome("timeout", message=f"time limit {time_limit:g} s exceeded", time_s=max(time_s, time_limit),
+                          memory_mb=mem)
+    errors = [r["load_error"] for r in child.replies if isinstance(r.get("load_error"), dict)]
+    if errors:
+        outcome = _error_outcome(errors[0], time_s, mem)
+        if errors[0].get("type") == "SyntaxError":
+            outcome.status = "load_error"
+        return outcome
+    if child.exit_status != 0:
+        outcome = _classify_death(child, time_limit, mem, box.limits.memory_mb)
+        outcome.time_s = time_s
+        if child.exit_status and child.exit_status > 0:
+            outcome.message = f"the program exited with code {child.exit_status}"
+        return outcome
+    with open(out_path, "rb") as f:
+        data = f.read(box.limits.output_mb << 20)
+    return RunOutcome("ok", value=data.decode("utf-8", errors="replace"), time_s=time_s, memory_mb=mem)

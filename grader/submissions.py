@@ -1,0 +1,131 @@
+"""Student submissions: read a ``.py`` file or the code cells of an ``.ipynb`` notebook, and decide
+how to run it (function mode when it defines the entry function, stdio mode when it reads stdin).
+
+Parsing here is static (``ast``), in the grader's process, on size-capped text: the code itself
+only ever runs in the sandbox.
+
+Example:
+    >>> s = Submission.from_source("def delaunay(points):\\n    return []\\n", "s.py")
+    >>> s.mode("delaunay")
+    'function'
+"""
+
+from __future__ import annotations
+
+import ast
+import difflib
+import json
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+MAX_SOURCE_BYTES = 1 << 20
+_MAGIC = re.compile(r"^\s*(%|!)")
+_STDIN_NAMES = {"input", "stdin", "fileinput"}
+
+
+class SubmissionError(ValueError):
+    """The file cannot be a submission at all (wrong type, unreadable, too large)."""
+
+
+def notebook_code(text: str) -> str:
+    """Concatenate a notebook's code cells, dropping IPython magics (``%``, ``%%``) and ``!`` lines.
+
+    >>> nb = {"cells": [{"cell_type": "code", "source": ["%matplotlib inline\\n", "x = 1\\n"]}]}
+    >>> notebook_code(json.dumps(nb))
+    'x = 1\\n'
+    """
+    try:
+        nb = json.loads(text)
+    except ValueError as exc:
+        raise SubmissionError(f"not a valid notebook (JSON): {exc}") from None
+    chunks = []
+    for cell in nb.get("cells", []) if isinstance(nb, dict) else []:
+        if not isinstance(cell, dict) or cell.get("cell_type") != "code":
+            continue
+        src = cell.get("source", "")
+        src = "".join(src) if isinstance(src, list) else str(src)
+        if src.lstrip().startswith("%%"):
+            continue  # a cell magic (%%time, %%bash...) makes the whole cell non-Python
+        lines = [ln for ln in src.splitlines() if not _MAGIC.match(ln)]
+        if lines:
+            chunks.append("\n".join(lines) + "\n")
+    return "\n".join(chunks)
+
+
+@dataclass
+class Submission:
+    """Source text of one submission plus its display name."""
+
+    source: str
+    filename: str
+
+    @classmethod
+    def from_path(cls, path: str | Path) -> "Submission":
+        path = Path(path)
+        if path.suffix not in (".py", ".ipynb"):
+            raise SubmissionError(f"{path.name}: a submission must be a .py file or an .ipynb notebook")
+        try:
+            raw = path.read_bytes()
+        except OSError as exc:
+            raise SubmissionError(f"cannot read {path}: {exc.strerror}") from None
+        if len(raw) > MAX_SOURCE_BYTES:
+            raise SubmissionError(f"{path.name} is larger than {MAX_SOURCE_BYTES >> 10} KiB")
+        text = raw.decode("utf-8", errors="replace")
+        source = notebook_code(text) if path.suffix == ".ipynb" else text
+        return cls(source, "submission.py")
+
+    @classmethod
+    def from_source(cls, source: str, filename: str = "submission.py") -> "Submission":
+        return cls(source, filename)
+
+    def syntax_error(self) -> str | None:
+        """A student-facing message when the code does not parse, else None."""
+        try:
+            self._tree()
+        except SyntaxError as exc:
+            return f"SyntaxError: {exc.msg} (line {exc.lineno}): {(exc.text or '').strip()[:80]}"
+        except (ValueError, RecursionError, MemoryError) as exc:
+            return f"the code cannot be parsed: {type(exc).__name__}"
+        return None
+
+    def _tree(self) -> ast.Module:
+        if "_tree_cache" not in self.__dict__:
+            self.__dict__["_tree_cache"] = ast.parse(self.source)
+        return self.__dict__["_tree_cache"]
+
+    def top_level_names(self) -> set[str]:
+        names: set[str] = set()
+        for node in self._tree().body:
+            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+                names.add(node.name)
+            elif isinstance(node, (ast.Assign, ast.AnnAssign)):
+                targets = node.targets if isinstance(node, ast.Assign) else [node.target]
+                names.update(t.id for t in targets if isinstance(t, ast.Name))
+            elif isinstance(node, (ast.Import, ast.ImportFrom)):
+                names.update((a.asname or a.name).split(".")[0] for a in node.names)
+        return names
+
+    def reads_stdin(self) -> bool:
+        for node in ast.walk(self._tree()):
+            if isinstance(node, ast.Name) and node.id in _STDIN_NAMES:
+                return True
+            if isinstance(node, ast.Attribute) and node.attr in ("stdin", "buffer") :
+                return True
+            if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id == "open" \
+                    and node.args and isinstance(node.args[0], ast.Constant) and node.args[0].value == 0:
+                return True
+        return False
+
+    def mode(self, entry: str) -> str:
+        """'function' if ``entry`` is defined at top level, 'stdio' if the code reads stdin, else 'missing'."""
+        if entry in self.top_level_names():
+            return "function"
+        return "stdio" if self.reads_stdin() else "missing"
+
+    def missing_entry_message(self, entry: str) -> str:
+        defined = sorted(n for n in self.top_level_names() if not n.startswith("_"))
+        close = difflib.get_close_matches(entry, defined, n=1)
+        hint = f" Did you mean to name '{close[0]}' '{entry}'?" if close else ""
+        return (f"no function '{entry}(...)' is defined and the program does not read standard input."
+                f"{hint}")

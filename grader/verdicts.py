@@ -1,0 +1,126 @@
+"""Verdicts and scoring (SPEC section 5): per-test results, per-group points, the overall verdict.
+
+Example:
+    >>> t = TestResult("tiny/1", "tiny", Verdict.AC, 0.01)
+    >>> r = JudgeResult("delaunay", "s.py", [t], {"tiny": 20})
+    >>> (r.verdict, r.score, r.max_score)
+    ('AC', 20, 20)
+"""
+
+from __future__ import annotations
+
+from dataclasses import asdict, dataclass, field
+from enum import Enum
+
+
+class Verdict(str, Enum):
+    """Fixed verdict names. ``JE`` is only for faults of the judge itself."""
+
+    AC = "AC"  # accepted
+    WA = "WA"  # wrong answer
+    PE = "PE"  # output of the wrong shape or type
+    TLE = "TLE"  # time limit exceeded
+    MLE = "MLE"  # memory limit exceeded
+    OLE = "OLE"  # output limit exceeded
+    RE = "RE"  # run-time error
+    CE = "CE"  # syntax or import error, missing entry
+    SV = "SV"  # security violation: forbidden import or operation
+    JE = "JE"  # judge error
+    SKIPPED = "--"  # not run: an earlier test of the same group failed
+
+    def __str__(self) -> str:
+        return self.value
+
+
+DESCRIPTIONS = {
+    "AC": "accepted", "WA": "wrong answer", "PE": "presentation error (wrong shape or type)",
+    "TLE": "time limit exceeded", "MLE": "memory limit exceeded", "OLE": "output limit exceeded",
+    "RE": "run-time error", "CE": "compile error (syntax, import, missing entry)",
+    "SV": "security violation (forbidden import or operation)", "JE": "judge error", "--": "skipped",
+}
+
+
+@dataclass
+class TestResult:
+    """One test's outcome. ``input_preview`` is the failing input for small tests (for students)."""
+
+    name: str
+    group: str
+    verdict: Verdict
+    time_s: float = 0.0
+    memory_mb: float = 0.0
+    message: str = ""
+    input_preview: str = ""
+
+    def to_json(self) -> dict:
+        d = asdict(self)
+        d["verdict"] = str(self.verdict)
+        return d
+
+    @classmethod
+    def from_json(cls, d: dict) -> "TestResult":
+        return cls(**{**d, "verdict": Verdict(d["verdict"])})
+
+
+@dataclass
+class JudgeResult:
+    """All tests of one submission to one problem, with scoring by group."""
+
+    problem: str
+    submission: str
+    tests: list[TestResult]
+    group_points: dict[str, int]
+    mode: str = ""
+    judge_time_s: float = 0.0
+    extra: dict = field(default_factory=dict)
+
+    @property
+    def verdict(self) -> str:
+        """The first non-AC (non-skipped) test's verdict, else AC."""
+        for t in self.tests:
+            if t.verdict not in (Verdict.AC, Verdict.SKIPPED):
+                return str(t.verdict)
+        return "AC" if self.tests else "JE"
+
+    def group_passed(self, group: str) -> bool:
+        ts = [t for t in self.tests if t.group == group]
+        return bool(ts) and all(t.verdict == Verdict.AC for t in ts)
+
+    @property
+    def score(self) -> int:
+        return sum(p for g, p in self.group_points.items() if self.group_passed(g))
+
+    @property
+    def max_score(self) -> int:
+        return sum(self.group_points.values())
+
+    def to_json(self) -> dict:
+        """The ``--json`` object: problem, verdict, score, max_score, tests (name, group, verdict, time_s...)."""
+        return {
+            "problem": self.problem, "submission": self.submission, "verdict": self.verdict,
+            "score": self.score, "max_score": self.max_score, "mode": self.mode,
+            "groups": [{"name": g, "points": p, "passed": self.group_passed(g)} for g, p in self.group_points.items()],
+            "tests": [t.to_json() for t in self.tests], "judge_time_s": round(self.judge_time_s, 3), **self.extra,
+        }
+
+
+def format_table(result: JudgeResult) -> str:
+    """A readable per-test table (the default output of ``python -m grader judge``)."""
+    rows = [("test", "verdict", "time", "memory", "message")]
+    for t in result.tests:
+        rows.append((t.name, str(t.verdict), f"{t.time_s:.3f}s", f"{t.memory_mb:.0f}MB" if t.memory_mb else "-",
+                     t.message.splitlines()[0][:90] if t.message else ""))
+    widths = [max(len(r[i]) for r in rows) for i in range(4)]
+    lines = ["  ".join(c.ljust(w) for c, w in zip(r[:4], widths)) + "  " + r[4] for r in rows]
+    lines.insert(1, "-" * min(120, sum(widths) + 8 + 20))
+    groups = ", ".join(f"{g} {'passed' if result.group_passed(g) else 'failed'} ({p})"
+                       for g, p in result.group_points.items())
+    lines.append("")
+    lines.append(f"{result.problem}: {result.verdict} ({DESCRIPTIONS.get(result.verdict, '')}), "
+                 f"score {result.score}/{result.max_score}  [{groups}]")
+    first_bad = next((t for t in result.tests if t.verdict not in (Verdict.AC, Verdict.SKIPPED)), None)
+    if first_bad is not None:
+        lines.append(f"first failure: {first_bad.name}: {first_bad.message}")
+        if first_bad.input_preview:
+            lines.append("its input:\n" + first_bad.input_preview)
+    return "\n".join(lines)
