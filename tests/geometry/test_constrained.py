@@ -1,0 +1,385 @@
+"""Tests for reference_impl.constrained: constrained Delaunay triangulation and polygon triangulation.
+
+Run:  .venv/bin/python -m pytest tests/geometry/test_constrained.py -q
+
+Oracles: Shewchuk's Triangle (the ``triangle`` package, 'p' switch) on inputs in
+general position, where the CDT is unique; an exact checker written here with
+Python integers (``verify.exact_coordinates``): positive orientation, the
+triangles tile the convex hull, every segment is a chain of edges, every other
+interior edge is locally Delaunay (which implies constrained Delaunay); exact
+areas for polygons with integer coordinates; hand-made degenerate sets.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+import triangle
+from hypothesis import given, settings, strategies as st
+
+from reference_impl.constrained import (ConstrainedDelaunay, constrained_delaunay,
+                                        polygon_triangulation)
+from reference_impl.verify import (convex_hull_exact, exact_coordinates, incircle_exact,
+                                   orient_exact)
+
+
+# ----------------------------------------------------------------------------- exact checker
+def _between(P, i, j, k) -> bool:
+    """Point k strictly inside segment i-j (exact)."""
+    if orient_exact(P[i], P[j], P[k]) != 0 or P[k] in (P[i], P[j]):
+        return False
+    return (min(P[i], P[j]) < P[k] < max(P[i], P[j]))  # lexicographic order along the line
+
+
+def required_edges(P, segments) -> set[tuple[int, int]]:
+    """Each segment split at the points lying on it, as sorted index pairs of representatives."""
+    first: dict = {}
+    for i, p in enumerate(P):
+        first.setdefault(p, i)
+    out = set()
+    distinct = sorted(set(first.values()))
+    for i, j in segments:
+        i, j = first[P[i]], first[P[j]]
+        if i == j:
+            continue
+        chain = sorted([i, j] + [k for k in distinct if _between(P, i, j, k)], key=lambda k: P[k])
+        out.update((min(u, v), max(u, v)) for u, v in zip(chain, chain[1:]))
+    return out
+
+
+def assert_valid_cdt(points, segments, cdt: ConstrainedDelaunay) -> None:
+    P = exact_coordinates(points)
+    T = [tuple(t) for t in cdt.simplices.tolist()]
+    first: dict = {}
+    for i, p in enumerate(P):
+        first.setdefault(p, i)
+    distinct = sorted(set(first.values()))
+    hull = convex_hull_exact(P)
+    if len(distinct) < 3 or all(orient_exact(P[hull[0]], P[hull[-1]], P[i]) == 0 for i in distinct):
+        assert T == []
+        return
+    for t in T:
+        assert orient_exact(*(P[v] for v in t)) > 0, f"triangle {t} not counter-clockwise"
+    opposite = {}
+    for t in T:
+        for k in range(3):
+            e = (t[(k + 1) % 3], t[(k + 2) % 3])
+            assert e not in opposite, f"directed edge {e} used twice: overlap"
+            opposite[e] = t[k]
+    hull_edges = {(hull[i], hull[(i + 1) % len(hull)]) for i in range(len(hull))}
+    boundary = {e for e in opposite if (e[1], e[0]) not in opposite}
+    assert boundary == hull_edges, "triangles do not tile the convex hull"
+    assert {v for t in T for v in t} == set(distinct), "some point is not a vertex"
+    # neighbours agree with the triangles
+    for ti, t in enumerate(T):
+        for k in range(3):
+            o = cdt.neighbors[ti, k]
+            u, v = t[(k + 1) % 3], t[(k + 2) % 3]
+            if o < 0:
+                assert (u, v) in hull_edges
+            else:
+                assert {u, v} <= set(T[o])
+    req = required_edges(P, segments)
+    present = {(min(u, v), max(u, v)) for (u, v) in opposite}
+    assert req <= present, f"constraint edges missing: {sorted(req - present)[:5]}"
+    assert {tuple(e) for e in cdt.constraint_edges().tolist()} == req
+    for (u, v), w in opposite.items():
+        x = opposite.get((v, u))
+        if x is not None and (min(u, v), max(u, v)) not in req:
+            assert incircle_exact(P[u], P[v], P[w], P[x]) <= 0, f"edge {u}-{v} not locally Delaunay"
+
+
+def _crosses(P, a, b, c, d) -> bool:
+    """Closed segments a-b and c-d meet somewhere other than a shared endpoint (exact)."""
+    shared = {a, b} & {c, d}
+    if shared:
+        (s,) = shared if len(shared) == 1 else (None,)
+        if s is None:
+            return True
+        x = c if d == s else d
+        y = a if b == s else b
+        return orient_exact(P[s], P[x], P[y]) == 0 and (P[x] > P[s]) == (P[y] > P[s])
+    o1, o2 = orient_exact(P[a], P[b], P[c]), orient_exact(P[a], P[b], P[d])
+    o3, o4 = orient_exact(P[c], P[d], P[a]), orient_exact(P[c], P[d], P[b])
+    if o1 == o2 == 0:
+        return max(min(P[a], P[b]), min(P[c], P[d])) <= min(max(P[a], P[b]), max(P[c], P[d]))
+    return o1 * o2 <= 0 and o3 * o4 <= 0
+
+
+def random_segments(rng, pts, count, allow_touch=False):
+    """Random segments that pairwise meet only at shared endpoints (or anywhere on a line if allow_touch)."""
+    P = exact_coordinates(pts)
+    segs: list[tuple[int, int]] = []
+    for _ in range(count):
+        a, b = (int(v) for v in rng.choice(len(pts), 2, replace=False))
+        if P[a] == P[b]:
+            continue
+        if not allow_touch and any(_between(P, a, b, k) for k in range(len(P))):
+            continue
+        ok = True
+        for c, d in segs:
+            if allow_touch:
+                o1, o2 = orient_exact(P[a], P[b], P[c]), orient_exact(P[a], P[b], P[d])
+                o3, o4 = orient_exact(P[c], P[d], P[a]), orient_exact(P[c], P[d], P[b])
+                if o1 * o2 < 0 and o3 * o4 < 0:
+                    ok = False
+            elif _crosses(P, a, b, c, d):
+                ok = False
+            if not ok:
+                break
+        if ok:
+            segs.append((a, b))
+    return np.array(segs, dtype=np.int64).reshape(-1, 2)
+
+
+def triangle_set(tris) -> set:
+    return {frozenset(t) for t in np.asarray(tris).tolist()}
+
+
+# ----------------------------------------------------------------------------- CDT
+@settings(max_examples=40, deadline=None)
+@given(seed=st.integers(0, 2**32 - 1), n=st.integers(3, 70))
+def test_matches_triangle_in_general_position(seed, n):
+    rng = np.random.default_rng(seed)
+    pts = rng.random((n, 2))
+    segs = random_segments(rng, pts, 2 * n)
+    cdt = ConstrainedDelaunay(pts, segs)
+    assert_valid_cdt(pts, segs, cdt)
+    data = {"vertices": pts}
+    if len(segs):
+        data["segments"] = segs
+    ref = triangle.triangulate(data, "pc" if len(segs) else "c")
+    assert len(ref["vertices"]) == n          # Triangle added no Steiner point
+    assert triangle_set(cdt.simplices) == triangle_set(ref["triangles"])
+
+
+@settings(max_examples=30, deadline=None)
+@given(seed=st.integers(0, 2**32 - 1), side=st.integers(2, 8))
+def test_grid_with_segments_through_vertices(seed, side):
+    """Integer grid: cocircular everywhere, segments pass through grid points and overlap."""
+    rng = np.random.default_rng(seed)
+    g = np.arange(side, dtype=float)
+    pts = np.array([(x, y) for x in g for y in g])
+    segs = random_segments(rng, pts, 3 * side, allow_touch=True)
+    cdt = ConstrainedDelaunay(pts, segs)
+    assert_valid_cdt(pts, segs, cdt)
+    # the same triangles whatever the segment order and direction
+    perm = rng.permutation(len(segs))
+    again = ConstrainedDelaunay(pts, segs[perm][:, ::-1])
+    assert triangle_set(again.simplices) == triangle_set(cdt.simplices)
+
+
+def test_segment_through_vertex_is_split():
+    pts = [(0, 0), (2, 0), (4, 0), (2, 2), (2, -2)]
+    cdt = ConstrainedDelaunay(pts, [(3, 4)])        # vertical through (2, 0)
+    assert cdt.constraint_edges().tolist() == [[1, 3], [1, 4]]
+    assert_valid_cdt(pts, [(3, 4)], cdt)
+
+
+def test_segment_crossing_all_triangles_around_a_vertex():
+    """Regression: the segment crosses every triangle around vertex 10 (a cavity with an inner vertex)."""
+    pts = np.array([[0.01985877, 0.28875428], [0.53859445, 0.88773283], [0.16499393, 0.31096842],
+                    [0.0976338, 0.37640609], [0.08718824, 0.3704421], [0.27121365, 0.62668673],
+                    [0.16228733, 0.72021178]])
+    d = ConstrainedDelaunay(pts)
+    fan = [t for t in d.simplices.tolist() if 3 in t]
+    P = exact_coordinates(pts)
+    crossed = [t for t in fan if any(orient_exact(P[0], P[1], P[v]) > 0 for v in t)
+               and any(orient_exact(P[0], P[1], P[v]) < 0 for v in t)]
+    assert len(crossed) == len(fan) >= 3         # the premise: all of vertex 3's triangles are crossed
+    cdt = ConstrainedDelaunay(pts, [(0, 1)])
+    assert_valid_cdt(pts, [(0, 1)], cdt)
+
+
+def test_collinear_overlapping_and_shared_endpoints():
+    pts = [(0, 0), (1, 0), (2, 0), (3, 0), (1.5, 1), (1.5, -1), (1.5, 3)]
+    segs = [(0, 2), (1, 3), (0, 3), (4, 6), (4, 0), (4, 3), (5, 0), (5, 3)]
+    cdt = ConstrainedDelaunay(pts, segs)
+    assert_valid_cdt(pts, segs, cdt)
+    assert {(0, 1), (1, 2), (2, 3)} <= {tuple(e) for e in cdt.constraint_edges().tolist()}
+
+
+def test_crossing_segments_raise_naming_both():
+    pts = [(0, 0), (2, 2), (0, 2), (2, 0), (5, 5)]
+    with pytest.raises(ValueError, match=r"segments\[2\].*crosses segments\[0\]"):
+        ConstrainedDelaunay(pts, [(0, 1), (1, 4), (2, 3)])
+
+
+def test_crossing_at_a_shared_vertex_is_allowed():
+    pts = [(0, 0), (2, 2), (0, 2), (2, 0), (1, 1)]
+    cdt = ConstrainedDelaunay(pts, [(0, 1), (2, 3)])   # both pass through point 4
+    assert cdt.constraint_edges().tolist() == [[0, 4], [1, 4], [2, 4], [3, 4]]
+
+
+def test_duplicates_zero_length_and_collinear_input():
+    pts = [(0, 0), (1, 0), (0, 1), (0, 0), (1, 1)]
+    cdt = ConstrainedDelaunay(pts, [(0, 3), (3, 4)])   # 0-3 has zero length; 3 is 0's duplicate
+    assert cdt.index_map.tolist() == [0, 1, 2, 0, 4]
+    assert cdt.constraint_edges().tolist() == [[0, 4]]
+    assert_valid_cdt(pts, [(0, 4)], cdt)
+    flat = ConstrainedDelaunay([(0, 0), (1, 1), (2, 2)], [(0, 2)])
+    assert flat.simplices.shape == (0, 3) and flat.constraint_edges().shape == (0, 2)
+    assert ConstrainedDelaunay([(0, 0), (1, 0)], [(0, 1)]).simplices.shape == (0, 3)
+
+
+@pytest.mark.parametrize("segments, message", [
+    ([(0, 5)], "outside"),
+    ([(0, -1)], "outside"),
+    ([(0.0, 1.0)], "integer"),
+    ([(0, 1, 2)], "shape"),
+    ("01", "text"),
+])
+def test_bad_segments_raise(segments, message):
+    with pytest.raises(ValueError, match=message):
+        ConstrainedDelaunay([(0, 0), (1, 0), (0, 1)], segments)
+
+
+def test_bad_points_raise():
+    with pytest.raises(ValueError, match="not finite"):
+        constrained_delaunay([(0, 0), (1, math.nan), (0, 1)], [])
+
+
+@pytest.mark.parametrize("scale", [1e-200, 1e-5, 1e150])
+def test_scale_invariance(scale):
+    rng = np.random.default_rng(7)
+    pts = rng.random((40, 2))
+    segs = random_segments(rng, pts, 60)
+    base = triangle_set(constrained_delaunay(pts, segs))
+    scaled = ConstrainedDelaunay(pts * scale, segs)
+    assert triangle_set(scaled.simplices) == base
+    assert_valid_cdt(pts * scale, segs, scaled)
+
+
+# ----------------------------------------------------------------------------- polygons
+def star_polygon(rng, k, scale=1.0):
+    """Random simple polygon, star-shaped around the origin, radii in [0.7, 1] * scale."""
+    ang = (np.arange(k) + rng.uniform(-0.4, 0.4, k)) * 2 * np.pi / k
+    r = rng.uniform(0.7, 1.0, k)
+    return np.stack([r * np.cos(ang), r * np.sin(ang)], axis=1) * scale
+
+
+def convex_holes(rng, count, scale=1.0):
+    """Up to 9 disjoint convex holes around the points (0.3 i, 0.3 j), i, j in -1..1; returns holes, centres."""
+    cells = rng.permutation(9)[:count]
+    holes, centres = [], []
+    for c in cells:
+        cx, cy = 0.3 * (c % 3 - 1), 0.3 * (c // 3 - 1)
+        m = int(rng.integers(3, 7))
+        ang = np.sort(rng.uniform(0, 2 * np.pi, m))
+        if np.max(np.diff(np.concatenate([ang, [ang[0] + 2 * np.pi]]))) > 0.9 * np.pi:
+            ang = np.arange(m) * 2 * np.pi / m + ang[0]    # keep the centre inside the hole
+        r = rng.uniform(0.05, 0.1, m)
+        holes.append(np.stack([cx + r * np.cos(ang), cy + r * np.sin(ang)], axis=1) * scale)
+        centres.append((cx * scale, cy * scale))
+    return holes, centres
+
+
+def float_area(pt) -> float:
+    a, b, c = (pt.points[pt.simplices[:, k]] for k in range(3))
+    return float(np.sum((b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (c[:, 0] - a[:, 0]))) / 2
+
+
+def area2_int(P, ring) -> int:
+    return sum(P[a][0] * P[b][1] - P[b][0] * P[a][1] for a, b in zip(ring, list(ring[1:]) + [ring[0]]))
+
+
+@settings(max_examples=30, deadline=None)
+@given(seed=st.integers(0, 2**32 - 1), k=st.integers(12, 60), h=st.integers(0, 6))
+def test_polygon_with_holes_matches_triangle(seed, k, h):
+    rng = np.random.default_rng(seed)
+    boundary = star_polygon(rng, k)
+    holes, centres = convex_holes(rng, h)
+    pt = polygon_triangulation(boundary, holes)
+    rings = [boundary] + holes
+    sizes = np.cumsum([0] + [len(r) for r in rings])
+    segs = np.concatenate([np.stack([np.arange(a, b), np.roll(np.arange(a, b), -1)], 1)
+                           for a, b in zip(sizes[:-1], sizes[1:])])
+    data = {"vertices": np.vstack(rings), "segments": segs}
+    if centres:
+        data["holes"] = np.array(centres)
+    ref = triangle.triangulate(data, "p")
+    assert len(ref["vertices"]) == len(pt.points)
+    assert triangle_set(pt.simplices) == triangle_set(ref["triangles"])
+    # every boundary/hole edge is an edge with exactly one free triangle beside it
+    P = exact_coordinates(pt.points)
+    directed = {(t[k], t[(k + 1) % 3]) for t in pt.simplices.tolist() for k in range(3)}
+    for r, ring in enumerate(pt.rings):
+        for u, v in zip(ring, np.roll(ring, -1)):
+            assert (u, v) in directed and (v, u) not in directed
+        assert (area2_int(P, ring.tolist()) > 0) == (r == 0)
+
+
+@settings(max_examples=25, deadline=None)
+@given(seed=st.integers(0, 2**32 - 1), k=st.integers(12, 40), h=st.integers(0, 5),
+       flip=st.booleans())
+def test_integer_polygon_area_is_exact(seed, k, h, flip):
+    rng = np.random.default_rng(seed)
+    boundary = np.round(star_polygon(rng, k, 1000))
+    holes = [np.round(x) for x in convex_holes(rng, h, 1000)[0]]
+    if flip:                                   # any orientation is accepted
+        boundary = boundary[::-1]
+        holes = [x[::-1] for x in holes]
+    pt = polygon_triangulation(boundary, holes)
+    P = [tuple(int(c) for c in p) for p in pt.points]
+    tri_area = sum(area2_int(P, list(t)) for t in pt.simplices.tolist())
+    expect = abs(area2_int(P, list(range(len(boundary))))) - sum(
+        abs(area2_int(P, r.tolist())) for r in pt.rings[1:])
+    assert tri_area == expect
+    assert all(area2_int(P, list(t)) > 0 for t in pt.simplices.tolist())
+
+
+def test_rectangle_with_collinear_vertices_and_square_hole():
+    boundary = [(0, 0), (1, 0), (2, 0), (3, 0), (3, 1), (3, 2), (3, 3), (2, 3), (1, 3), (0, 3), (0, 2), (0, 1)]
+    hole = [(1, 1), (1.5, 1), (2, 1), (2, 2), (1, 2)]            # collinear vertex on a hole edge
+    pt = polygon_triangulation(boundary, [hole])
+    P = exact_coordinates(pt.points)
+    assert sum(orient_exact(*(P[v] for v in t)) for t in pt.simplices.tolist()) == len(pt.simplices)
+    area = float_area(pt)
+    assert area == 8.0
+    # 17 vertices, no interior points: triangles = n + 2 * holes - 2
+    assert len(pt.simplices) == len(pt.points) + 2 * 1 - 2
+
+
+def test_grid_room_with_axis_aligned_walls():
+    """A 4x4 room with two 1x1 pillars; boundary closed with a repeated first vertex."""
+    boundary = [(0, 0), (4, 0), (4, 4), (0, 4), (0, 0)]
+    holes = [[(1, 1), (2, 1), (2, 2), (1, 2)], [(3, 2), (3, 3), (2, 3), (2, 2.5)]]
+    pt = polygon_triangulation(boundary, holes)
+    assert len(pt.points) == 12 and pt.rings[0].tolist() == [0, 1, 2, 3]
+    area = float_area(pt)
+    assert area == 16 - 1 - 0.75
+    # neighbours: -1 exactly across the 4 + 4 + 4 ring edges
+    assert int((pt.neighbors < 0).sum()) == 12
+
+
+def test_orientation_is_normalised():
+    pt1 = polygon_triangulation([(0, 0), (4, 0), (4, 4), (0, 4)], [[(1, 1), (2, 1), (2, 2)]])
+    pt2 = polygon_triangulation([(0, 4), (4, 4), (4, 0), (0, 0)], [[(2, 2), (2, 1), (1, 1)]])
+    assert pt1.rings[0].tolist() == [0, 1, 2, 3] and pt1.rings[1].tolist() == [6, 5, 4]
+    assert pt2.rings[0].tolist() == [3, 2, 1, 0] and pt2.rings[1].tolist() == [4, 5, 6]
+    key = lambda pt: {frozenset(map(tuple, pt.points[t].tolist())) for t in pt.simplices}  # noqa: E731
+    assert key(pt1) == key(pt2)
+
+
+SQUARE = [(0, 0), (10, 0), (10, 10), (0, 10)]
+
+
+@pytest.mark.parametrize("boundary, holes, message", [
+    ([(0, 0), (2, 0), (0, 2), (2, 2)], [], "boundary edge 3 .* crosses boundary edge 1"),
+    (SQUARE, [[(20, 20), (21, 20), (21, 21)]], "hole 0 lies outside the boundary"),
+    (SQUARE, [[(1, 1), (9, 1), (9, 9), (1, 9)], [(4, 4), (5, 4), (5, 5)]], "hole 1 lies inside hole 0"),
+    (SQUARE, [[(4, 4), (5, 4), (5, 5)], [(1, 1), (9, 1), (9, 9), (1, 9)]], "hole 0 lies inside hole 1"),
+    (SQUARE, [[(1, 1), (5, 1), (5, 5)], [(4, 2), (8, 2), (8, 8)]], "hole 1 edge .* crosses hole 0 edge"),
+    (SQUARE, [[(5, 0), (6, 1), (4, 1)]], "hole 0 vertex 0 .* repeats|lies on"),
+    (SQUARE, [[(5, 0.0), (6, 1), (4, 1)]], "lies on boundary edge 0"),
+    (SQUARE, [[(10, 10), (9, 9), (9, 8)]], "repeats boundary vertex 2"),
+    ([(0, 0), (4, 0), (2, 0), (2, 2)], [], "lies on"),                  # spike folding back
+    ([(0, 0), (1, 1), (2, 2)], [], "zero area"),
+    ([(0, 0), (1, 1), (0, 0)], [], "at least 3"),
+    (SQUARE, [[(1, 1), (2, math.nan), (2, 2)]], r"holes\[0\]"),
+    ([(0, 0), (4, 0), (4, 4), (2, 2), (0, 4), (2, 2)], [], "repeats"),   # touches itself at a vertex
+])
+def test_invalid_polygons_raise(boundary, holes, message):
+    with pytest.raises(ValueError, match=message):
+        polygon_triangulation(boundary, holes)
