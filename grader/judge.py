@@ -104,12 +104,12 @@ class Judge:
         return self._args[k], self._answers[k]
 
     def judge_path(self, path: str | Path, on_test: Callable[[TestResult], None] | None = None,
-                   skip: set[str] = frozenset()) -> JudgeResult:
+                   prior: dict[str, TestResult] | None = None) -> JudgeResult:
         try:
             sub = Submission.from_path(path)
         except SubmissionError as exc:
-            return self._all(str(path), Verdict.CE, str(exc), "none")
-        return self.judge(sub, str(path), on_test, skip)
+            return self._all(str(path), Verdict.CE, str(exc), "none", on_test)
+        return self.judge(sub, str(path), on_test, prior)
 
     def _all(self, name: str, verdict: Verdict, message: str, mode: str,
              on_test: Callable[[TestResult], None] | None = None) -> JudgeResult:
@@ -122,9 +122,11 @@ class Judge:
         return JudgeResult(self.problem.id, name, tests, self.problem.group_points, mode=mode)
 
     def judge(self, sub: Submission, name: str = "submission.py",
-              on_test: Callable[[TestResult], None] | None = None, skip: set[str] = frozenset()) -> JudgeResult:
-        """Judge ``sub``; ``on_test`` is called after each test; tests named in ``skip`` are not run
-        (their results are already known, e.g. stored by an interrupted batch)."""
+              on_test: Callable[[TestResult], None] | None = None,
+              prior: dict[str, TestResult] | None = None) -> JudgeResult:
+        """Judge ``sub``; ``on_test`` is called after each newly run test; tests in ``prior`` (results
+        already stored by an interrupted batch) are reused, not run again."""
+        prior = prior or {}
         t0 = time.monotonic()
         syntax = sub.syntax_error()
         if syntax:
@@ -143,7 +145,11 @@ class Judge:
                                         filename=sub.filename, total_cpu_s=budget)
             try:
                 for k, test in enumerate(self.tests):
-                    if test.name in skip:
+                    if test.name in prior:
+                        r = prior[test.name]
+                        if r.verdict not in (Verdict.AC, Verdict.SKIPPED):
+                            failed_groups.add(test.group)
+                        results.append(r)
                         continue
                     if load_failure is not None:
                         r = TestResult(test.name, test.group, load_failure[0], 0.0, 0.0, load_failure[1])
@@ -187,6 +193,8 @@ class Judge:
                 else:
                     ok, message = chk.check(args, answer, expected)
                     r.verdict, r.message = (Verdict.AC, "") if ok else (Verdict.WA, message)
+                    if not ok:
+                        r.received = answer
             else:
                 r.verdict, r.message = _verdict_for(outcome)
         except Exception as exc:  # noqa: BLE001 - only the judge's own code runs here

@@ -112,7 +112,7 @@ class Problem:
             id=path.name, path=path, title=name if isinstance(name, str) else name.get("en", path.name),
             time_limit=float(limits.get("time_limit", 2.0)), memory_mb=int(limits.get("memory", 1024)),
             output_mb=int(limits.get("output", 16)), entry=str(course["entry"]), forbidden=forbidden,
-            groups=groups, checker_path=path / course.get("checker", "output_validators/checker.py"),
+            groups=groups, checker_path=path / course.get("checker", "output_validator/checker.py"),
             generator_path=(path / course["generator"]) if course.get("generator") else None,
             seed=int(course.get("seed", 0)), timed=dict(course.get("timed") or {}),
         )
@@ -171,6 +171,9 @@ class Problem:
     # -- tests ----------------------------------------------------------------------------
     def digest(self) -> str:
         h = hashlib.sha256()
+        for f in (self.checker_path, self.generator_path):  # may sit behind symlinked directories
+            if f is not None and f.is_file():
+                h.update(f.read_bytes())
         for f in sorted(p for p in self.path.rglob("*") if p.is_file() and "__pycache__" not in p.parts):
             h.update(str(f.relative_to(self.path)).encode())
             h.update(f.read_bytes())

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from dataclasses import asdict, dataclass, field
 from enum import Enum
+from typing import Any
 
 
 class Verdict(str, Enum):
@@ -51,15 +52,18 @@ class TestResult:
     memory_mb: float = 0.0
     message: str = ""
     input_preview: str = ""
+    received: Any = field(default=None, repr=False, compare=False)  #: a wrong answer, for reports only
 
     def to_json(self) -> dict:
         d = asdict(self)
+        d.pop("received")
         d["verdict"] = str(self.verdict)
         return d
 
     @classmethod
     def from_json(cls, d: dict) -> "TestResult":
-        return cls(**{**d, "verdict": Verdict(d["verdict"])})
+        keys = {"name", "group", "verdict", "time_s", "memory_mb", "message", "input_preview"}
+        return cls(**{k: v for k, v in d.items() if k in keys and k != "verdict"}, verdict=Verdict(d["verdict"]))
 
 
 @dataclass

@@ -1,0 +1,6 @@
+"""Entry point: ``python -m grader --help`` (see grader/cli.py)."""
+import sys
+
+from .cli import main
+
+sys.exit(main())

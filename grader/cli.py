@@ -1,0 +1,173 @@
+"""Command line of the judge: ``python -m grader <command>``.
+
+    python -m grader list
+    python -m grader judge PROBLEM FILE [--json] [--report out.html]
+    python -m grader grade PROBLEM SUBMISSIONS_DIR [--db results.sqlite] [--jobs N] [--csv grades.csv]
+                           [--reports DIR] [--scheduler tcp://host:8786]
+    python -m grader timed start PROBLEM STUDENT [--db timed.sqlite]
+    python -m grader timed submit PROBLEM STUDENT FILE [--db timed.sqlite] [--json]
+    python -m grader scoreboard [--db results.sqlite] [--start ISO|EPOCH] [--problems a,b] [--json]
+    python -m grader export-kattis PROBLEM OUTDIR [--groups g1,g2]
+    python -m grader validate PROBLEM
+
+Exit status: 0 on success (whatever the verdict), 2 for bad usage or input (a clear message).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from pathlib import Path
+
+from . import scoreboard as sb
+from . import timed
+from .judge import Judge
+from .problems import list_problems, load_problem
+from .store import ResultStore
+from .verdicts import format_table
+
+
+def _cmd_list(a: argparse.Namespace) -> int:
+    rows = [(p.id, p.entry, f"{p.time_limit:g}s", str(sum(g.points for g in p.groups)), p.title) for p in list_problems()]
+    if a.json:
+        print(json.dumps([dict(zip(("id", "entry", "time_limit", "points", "title"), r)) for r in rows], indent=1))
+        return 0
+    for r in [("id", "entry", "limit", "points", "title"), *rows]:
+        print(f"{r[0]:22} {r[1]:22} {r[2]:6} {r[3]:6} {r[4]}")
+    return 0
+
+
+def _cmd_judge(a: argparse.Namespace) -> int:
+    path = Path(a.file)
+    if not path.is_file():
+        raise ValueError(f"submission file {path} does not exist")
+    judge = Judge(a.problem, hide=[str(path.resolve().parent)])
+    result = judge.judge_path(path)
+    if a.report:
+        from .report import write_report
+
+        write_report(result, a.report, judge.problem)
+    print(json.dumps(result.to_json(), indent=1) if a.json else format_table(result))
+    return 0
+
+
+def _cmd_grade(a: argparse.Namespace) -> int:
+    from .classgrade import grade_class
+
+    summaries = grade_class(a.problem, a.submissions, a.db, jobs=a.jobs, scheduler=a.scheduler, csv_path=a.csv,
+                            report_dir=a.reports, progress=not a.quiet)
+    if a.json:
+        print(json.dumps(summaries, indent=1))
+    else:
+        for s in sorted(summaries, key=lambda s: s["student"]):
+            print(f"{s['student']:20} {s.get('verdict', ''):4} {s.get('score', '')}/{s.get('max_score', '')} {s.get('skipped', '')}")
+    return 0
+
+
+def _cmd_timed(a: argparse.Namespace) -> int:
+    store = ResultStore(a.db)
+    try:
+        if a.action == "start":
+            info = timed.start(a.problem, a.student, store)
+            print(json.dumps(info) if a.json else
+                  f"{a.student}: {a.problem} started; {info['duration_min']} minutes, deadline at epoch {info['deadline']:.0f}")
+        else:
+            if not a.file or not Path(a.file).is_file():
+                raise ValueError("timed submit needs an existing FILE")
+            out = timed.submit(a.problem, a.student, a.file, store)
+            if a.json:
+                print(json.dumps({**out.result.to_json(), "elapsed_s": round(out.elapsed_s, 1), "late": out.late,
+                                  "multiplier": out.multiplier, "final_score": out.final_score, "note": out.note}, indent=1))
+            else:
+                print(format_table(out.result))
+                print(f"elapsed {out.elapsed_s / 60:.1f} min; {out.note}; final score {out.final_score:g}/{out.result.max_score}")
+    finally:
+        store.close()
+    return 0
+
+
+def _cmd_scoreboard(a: argparse.Namespace) -> int:
+    store = ResultStore(a.db)
+    rows = sb.compute(store, sb.parse_start(a.start), a.problems.split(",") if a.problems else None)
+    store.close()
+    print(json.dumps(rows, indent=1) if a.json else sb.format_board(rows))
+    return 0
+
+
+def _cmd_export(a: argparse.Namespace) -> int:
+    from .kattis import export
+
+    dest = export(a.problem, a.outdir, groups=a.groups.split(",") if a.groups else None)
+    print(dest)
+    return 0
+
+
+def _cmd_validate(a: argparse.Namespace) -> int:
+    p = load_problem(a.problem)
+    errors = p.validate() + p.validate_inputs()
+    for e in errors:
+        print(f"{p.id}: {e}")
+    print(f"{p.id}: {len(p.tests())} tests, {'OK' if not errors else f'{len(errors)} problems'}")
+    return 1 if errors else 0
+
+
+def build_parser() -> argparse.ArgumentParser:
+    ap = argparse.ArgumentParser(prog="python -m grader", description="Sandboxed contest-style judge for the course.")
+    sub = ap.add_subparsers(dest="command", required=True)
+    p = sub.add_parser("list", help="list problems")
+    p.add_argument("--json", action="store_true")
+    p.set_defaults(func=_cmd_list)
+    p = sub.add_parser("judge", help="judge one submission")
+    p.add_argument("problem")
+    p.add_argument("file")
+    p.add_argument("--json", action="store_true", help="one JSON object instead of the table")
+    p.add_argument("--report", help="also write an HTML report here")
+    p.set_defaults(func=_cmd_judge)
+    p = sub.add_parser("grade", help="grade a class: SUBMISSIONS/<student>/<file>")
+    p.add_argument("problem")
+    p.add_argument("submissions")
+    p.add_argument("--db", default="results.sqlite")
+    p.add_argument("--jobs", type=int, default=1)
+    p.add_argument("--csv")
+    p.add_argument("--reports", help="directory for one HTML report per student")
+    p.add_argument("--scheduler", help="Dask distributed scheduler address")
+    p.add_argument("--json", action="store_true")
+    p.add_argument("--quiet", action="store_true", help="no progress bar")
+    p.set_defaults(func=_cmd_grade)
+    p = sub.add_parser("timed", help="timed attempts: start / submit")
+    p.add_argument("action", choices=["start", "submit"])
+    p.add_argument("problem")
+    p.add_argument("student")
+    p.add_argument("file", nargs="?")
+    p.add_argument("--db", default="timed.sqlite")
+    p.add_argument("--json", action="store_true")
+    p.set_defaults(func=_cmd_timed)
+    p = sub.add_parser("scoreboard", help="ICPC-style scoreboard")
+    p.add_argument("--db", default="results.sqlite")
+    p.add_argument("--start")
+    p.add_argument("--problems")
+    p.add_argument("--json", action="store_true")
+    p.set_defaults(func=_cmd_scoreboard)
+    p = sub.add_parser("export-kattis", help="write a Kattis problem package")
+    p.add_argument("problem")
+    p.add_argument("outdir")
+    p.add_argument("--groups", help="only these hidden groups (comma-separated)")
+    p.set_defaults(func=_cmd_export)
+    p = sub.add_parser("validate", help="check a problem package and its test inputs")
+    p.add_argument("problem")
+    p.set_defaults(func=_cmd_validate)
+    return ap
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = build_parser().parse_args(argv)
+    try:
+        return args.func(args)
+    except ValueError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,76 @@
+"""ICPC-style scoreboard from the results store: problems solved, then penalty time.
+
+Penalty for a solved problem = minutes from the start to the first AC submission plus 20 minutes
+for each rejected submission before it. The start is ``--start`` (epoch seconds or ISO time), else
+the student's timed start for that problem, else the first submission in the store.
+
+Example:
+    >>> rows = compute(ResultStore(":memory:"))
+    >>> rows
+    []
+"""
+
+from __future__ import annotations
+
+import datetime as dt
+
+from .store import ResultStore
+
+PENALTY_MIN = 20
+
+
+def parse_start(text: str | None) -> float | None:
+    """Epoch seconds or an ISO 8601 time; None stays None."""
+    if text is None:
+        return None
+    try:
+        return float(text)
+    except ValueError:
+        try:
+            return dt.datetime.fromisoformat(text).timestamp()
+        except ValueError:
+            raise ValueError(f"--start must be epoch seconds or an ISO time, got {text!r}") from None
+
+
+def compute(store: ResultStore, start: float | None = None, problems: list[str] | None = None) -> list[dict]:
+    subs = [s for s in store.submissions() if s["status"] == "done" and (not problems or s["problem"] in problems)]
+    if not subs:
+        return []
+    first = min(s["submitted_at"] for s in subs)
+    timed = {(r[0], r[1]): r[2] for r in store.db.execute("SELECT student, problem, started_at FROM timed")}
+    board: dict[str, dict] = {}
+    for s in subs:  # in submission order
+        row = board.setdefault(s["student"], {"student": s["student"], "solved": 0, "penalty": 0, "problems": {}})
+        cell = row["problems"].setdefault(s["problem"], {"tries": 0, "solved_at_min": None})
+        if cell["solved_at_min"] is not None:
+            continue
+        cell["tries"] += 1
+        if s["verdict"] == "AC" and (s["multiplier"] is None or s["multiplier"] > 0):
+            t0 = start if start is not None else timed.get((s["student"], s["problem"]), first)
+            minutes = int(max(0.0, s["submitted_at"] - t0) // 60)
+            cell["solved_at_min"] = minutes
+            row["solved"] += 1
+            row["penalty"] += minutes + PENALTY_MIN * (cell["tries"] - 1)
+    rows = sorted(board.values(), key=lambda r: (-r["solved"], r["penalty"], r["student"]))
+    for rank, r in enumerate(rows, 1):
+        r["rank"] = rank
+    return rows
+
+
+def format_board(rows: list[dict]) -> str:
+    problems = sorted({p for r in rows for p in r["problems"]})
+    head = ["rank", "student", "solved", "penalty", *problems]
+    table = [head]
+    for r in rows:
+        cells = []
+        for p in problems:
+            c = r["problems"].get(p)
+            if c is None:
+                cells.append("")
+            elif c["solved_at_min"] is not None:
+                cells.append(f"+{c['tries'] - 1 or ''} {c['solved_at_min']}'".replace("+ ", "+"))
+            else:
+                cells.append(f"-{c['tries']}")
+        table.append([str(r["rank"]), r["student"], str(r["solved"]), str(r["penalty"]), *cells])
+    widths = [max(len(row[i]) for row in table) for i in range(len(head))]
+    return "\n".join("  ".join(c.ljust(w) for c, w in zip(row, widths)) for row in table)

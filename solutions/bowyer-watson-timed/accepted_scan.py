@@ -1,0 +1,1 @@
+../delaunay/scan_quadratic.py

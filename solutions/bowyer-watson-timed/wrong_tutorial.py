@@ -1,0 +1,1 @@
+../delaunay/wrong_tutorial.py
