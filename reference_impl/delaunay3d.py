@@ -338,7 +338,12 @@ def delaunay_3d(points) -> np.ndarray:
     """The (m, 4) tetrahedra of a Delaunay tetrahedralisation of (n, 3) points, each
     positively oriented (orient3d > 0); an empty (0, 4) array for coplanar input.
 
-    >>> delaunay_3d([(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)]).tolist()
-    [[0, 2, 1, 3]]
+    >>> pts = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)]
+    >>> t = delaunay_3d(pts)
+    >>> t.tolist()
+    [[0, 3, 2, 1]]
+    >>> from reference_impl.predicates3d import orient3d
+    >>> orient3d(*(pts[i] for i in t[0]))
+    1
     """
     return Delaunay3D(points).simplices
