@@ -1,10 +1,20 @@
 """reference_impl: the course's robust geometry library (answer key and teaching code).
 
->>> from reference_impl import Delaunay, orient2d
+Every geometric decision uses exact predicates, so degenerate input (grids,
+cocircular or collinear points, duplicates, coordinates from 1e-300 to 1e300)
+gives exact answers.  Points are (n, 2) float64 arrays; triangles are (m, 3)
+counter-clockwise point indices, as in scipy.spatial and Delaunator.
+
+>>> from reference_impl import Delaunay, bowyer_watson, orient2d
 >>> orient2d((0, 0), (1, 0), (0, 1))
 1
+>>> Delaunay([(0, 0), (1, 0), (0, 1), (1, 1)]).simplices.shape
+(2, 3)
+>>> bowyer_watson([(1, 1), (3, 2), (5, 1), (4, 4)]).tolist()
+[[0, 1, 3], [0, 2, 1], [1, 2, 3]]
 """
+from .bowyer_watson import Step, bowyer_watson, dry_run
 from .delaunay import Delaunay
 from .predicates import incircle, orient2d
 
-__all__ = ["Delaunay", "orient2d", "incircle"]
+__all__ = ["Delaunay", "bowyer_watson", "Step", "dry_run", "orient2d", "incircle"]

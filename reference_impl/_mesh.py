@@ -7,11 +7,14 @@ the public API.  The mesh, in the style of Delaunator:
   *infinite vertex*: every convex-hull edge (u, v) has a *ghost triangle*
   (v, u, INF) outside it, so the outside of the hull is triangulated too and no
   super-triangle (with its coordinate limits) is needed;
-* ``tri[3*t + k]`` is vertex k of triangle t, counter-clockwise;
-* ``nbr[3*t + k]`` is the triangle across the edge opposite vertex k, that is
-  across edge (tri[3t + k+1], tri[3t + k+2]) (indices mod 3).  Every triangle
-  has three neighbours, because ghosts close the surface;
-* a dead triangle slot has ``tri[3*t] == DEAD``.
+* one flat int32 array ``M`` holds an aligned 32-byte record per triangle t
+  (two records per cache line, never one split across two):
+  ``M[8*t + k]`` (k = 0, 1, 2) is vertex k, counter-clockwise;
+  ``M[8*t + 3 + k]`` is the triangle across the edge opposite vertex k, that
+  is across edge (vertex k+1, vertex k+2) (indices mod 3).  Every triangle has
+  three neighbours, because ghosts close the surface;
+  ``M[8*t + 6]`` is a scratch mark for the cavity search; ``M[8*t + 7]`` is unused;
+* a dead triangle slot has ``M[8*t] == DEAD``.
 
 Insertion of point p (Bowyer-Watson):
 
@@ -36,6 +39,7 @@ from numba import njit
 from .predicates import incircle_nb, orient2d_nb
 
 INF = -1
+RECORD = 8  # int32 entries per triangle record
 DEAD = -2
 
 # state array fields
@@ -46,15 +50,15 @@ STATE_SIZE = 8
 
 
 @njit(cache=True, inline="always")
-def _is_ghost(tri, t):
-    return tri[3 * t] == INF or tri[3 * t + 1] == INF or tri[3 * t + 2] == INF
+def _is_ghost(M, t):
+    return M[8 * t] == INF or M[8 * t + 1] == INF or M[8 * t + 2] == INF
 
 
 @njit(cache=True, inline="always")
-def _in_conflict(tri, t, X, Y, px, py, w):
-    a = tri[3 * t]
-    b = tri[3 * t + 1]
-    c = tri[3 * t + 2]
+def _in_conflict(M, t, P, px, py, w):
+    a = M[8 * t]
+    b = M[8 * t + 1]
+    c = M[8 * t + 2]
     if c == INF:
         u, v = a, b
     elif a == INF:
@@ -62,54 +66,54 @@ def _in_conflict(tri, t, X, Y, px, py, w):
     elif b == INF:
         u, v = c, a
     else:
-        return incircle_nb(X[a], Y[a], X[b], Y[b], X[c], Y[c], px, py, w) > 0
-    o = orient2d_nb(X[u], Y[u], X[v], Y[v], px, py, w)
+        return incircle_nb(P[a, 0], P[a, 1], P[b, 0], P[b, 1], P[c, 0], P[c, 1], px, py, w) > 0
+    o = orient2d_nb(P[u, 0], P[u, 1], P[v, 0], P[v, 1], px, py, w)
     if o != 0:
         return o > 0
     # on the hull line: in conflict only strictly inside the segment
-    if X[u] != X[v]:
-        return min(X[u], X[v]) < px < max(X[u], X[v])
-    return min(Y[u], Y[v]) < py < max(Y[u], Y[v])
+    if P[u, 0] != P[v, 0]:
+        return min(P[u, 0], P[v, 0]) < px < max(P[u, 0], P[v, 0])
+    return min(P[u, 1], P[v, 1]) < py < max(P[u, 1], P[v, 1])
 
 
 @njit(cache=True, inline="always")
-def real_neighbour_of_ghost(tri, nbr, t):
+def real_neighbour_of_ghost(M, t):
     """The real triangle across the hull edge of ghost t (t itself if it is real)."""
     for k in range(3):
-        if tri[3 * t + k] == INF:
-            return nbr[3 * t + k]
+        if M[8 * t + k] == INF:
+            return M[8 * t + 3 + k]
     return t
 
 
 @njit(cache=True, inline="always")
-def locate(tri, nbr, X, Y, px, py, start, w, state):
+def locate(M, P, px, py, start, w, state):
     """Walk from triangle ``start`` to a triangle whose closure contains p.
 
     Returns a real triangle containing p, or a ghost triangle whose hull edge
     sees p strictly on its outer side.  Terminates because the mesh is Delaunay.
     """
-    t = real_neighbour_of_ghost(tri, nbr, start)
+    t = real_neighbour_of_ghost(M, start)
     prev = -1
     while True:
         moved = False
         for k in range(3):
-            o = nbr[3 * t + k]
+            o = M[8 * t + 3 + k]
             if o == prev:
                 continue
-            u = tri[3 * t + (k + 1) % 3]
-            v = tri[3 * t + (k + 2) % 3]
-            if orient2d_nb(X[u], Y[u], X[v], Y[v], px, py, w) < 0:
+            u = M[8 * t + (k + 1) % 3]
+            v = M[8 * t + (k + 2) % 3]
+            if orient2d_nb(P[u, 0], P[u, 1], P[v, 0], P[v, 1], px, py, w) < 0:
                 state[S_STEPS] += 1
                 prev = t
                 t = o
                 moved = True
                 break
-        if not moved or _is_ghost(tri, t):
+        if not moved or _is_ghost(M, t):
             return t
 
 
 @njit(cache=True, inline="always")
-def _new_slot(tri, nbr, state, bad, nbad, used):
+def _new_slot(M, state, bad, nbad, used):
     if used < nbad:
         return bad[used]
     t = state[S_NTRI]
@@ -118,26 +122,26 @@ def _new_slot(tri, nbr, state, bad, nbad, used):
 
 
 @njit(cache=True, inline="always")
-def insert(p, X, Y, tri, nbr, mark, stack, bad, ba, bb, bo, start_of, state, w):
-    """Insert vertex p (coordinates X[p], Y[p]) into a mesh with at least one triangle.
+def insert(p, P, M, stack, bad, ba, bb, bo, start_of, state, w):
+    """Insert vertex p (coordinates P[p]) into a mesh with at least one triangle.
 
     Returns -1 when inserted, or the vertex that p duplicates exactly (then the
-    mesh is unchanged).  Scratch arrays: ``mark`` (per triangle), ``stack``,
+    mesh is unchanged).  Scratch arrays: ``stack``,
     ``bad``, ``ba``, ``bb``, ``bo`` (per cavity; as long as the triangle arrays)
     and ``start_of`` (per vertex, index v + 1).
     """
-    px = X[p]
-    py = Y[p]
-    t = locate(tri, nbr, X, Y, px, py, state[S_LAST], w, state)
-    if not _is_ghost(tri, t):
+    px = P[p, 0]
+    py = P[p, 1]
+    t = locate(M, P, px, py, state[S_LAST], w, state)
+    if not _is_ghost(M, t):
         for k in range(3):
-            v = tri[3 * t + k]
-            if X[v] == px and Y[v] == py:
+            v = M[8 * t + k]
+            if P[v, 0] == px and P[v, 1] == py:
                 return v
     # --- cavity: depth-first search from t (which is in conflict) -------------
     state[S_STAMP] += 1
     stamp = state[S_STAMP]
-    mark[t] = stamp
+    M[8 * t + 6] = stamp
     bad[0] = t
     nbad = 1
     stack[0] = t
@@ -147,25 +151,25 @@ def insert(p, X, Y, tri, nbr, mark, stack, bad, ba, bb, bo, start_of, state, w):
         top -= 1
         s = stack[top]
         for k in range(3):
-            o = nbr[3 * s + k]
-            mo = mark[o]
+            o = M[8 * s + 3 + k]
+            mo = M[8 * o + 6]
             if mo == stamp:
                 continue
             if mo == -stamp:
                 conflict = False
             else:
                 state[S_TESTS] += 1
-                conflict = _in_conflict(tri, o, X, Y, px, py, w)
+                conflict = _in_conflict(M, o, P, px, py, w)
             if conflict:
-                mark[o] = stamp
+                M[8 * o + 6] = stamp
                 bad[nbad] = o
                 nbad += 1
                 stack[top] = o
                 top += 1
             else:
-                mark[o] = -stamp
-                ba[nb] = tri[3 * s + (k + 1) % 3]
-                bb[nb] = tri[3 * s + (k + 2) % 3]
+                M[8 * o + 6] = -stamp
+                ba[nb] = M[8 * s + (k + 1) % 3]
+                bb[nb] = M[8 * s + (k + 2) % 3]
                 bo[nb] = o
                 nb += 1
     state[S_BAD] += nbad
@@ -175,106 +179,110 @@ def insert(p, X, Y, tri, nbr, mark, stack, bad, ba, bb, bo, start_of, state, w):
         a = ba[i]
         b = bb[i]
         o = bo[i]
-        s = _new_slot(tri, nbr, state, bad, nbad, i)
-        tri[3 * s] = a
-        tri[3 * s + 1] = b
-        tri[3 * s + 2] = p
-        nbr[3 * s + 2] = o
+        s = _new_slot(M, state, bad, nbad, i)
+        M[8 * s] = a
+        M[8 * s + 1] = b
+        M[8 * s + 2] = p
+        M[8 * s + 3 + 2] = o
         # the outside triangle o now faces s across edge (b, a)
         for j in range(3):
-            x = tri[3 * o + j]
+            x = M[8 * o + j]
             if x != a and x != b:
-                nbr[3 * o + j] = s
+                M[8 * o + 3 + j] = s
                 break
         start_of[a + 1] = s
-        mark[s] = 0
+        M[8 * s + 6] = 0
         if a != INF and b != INF:
             last_real = s
         bo[i] = s  # reuse: bo now holds the new triangle of boundary edge i
     for i in range(nb):
         s = bo[i]
         s2 = start_of[bb[i] + 1]   # the new triangle (b, c, p) that follows (a, b, p)
-        nbr[3 * s] = s2
-        nbr[3 * s2 + 1] = s
+        M[8 * s + 3] = s2
+        M[8 * s2 + 3 + 1] = s
     state[S_LAST] = last_real
     return -1
 
 
 @njit(cache=True)
-def _link_brute(tri, nbr, ts):
+def _link_brute(M, ts):
     # link a handful of triangles by their shared edges (used to seed the mesh)
     for i in ts:
         for k in range(3):
-            u = tri[3 * i + (k + 1) % 3]
-            v = tri[3 * i + (k + 2) % 3]
+            u = M[8 * i + (k + 1) % 3]
+            v = M[8 * i + (k + 2) % 3]
             for j in ts:
                 if j == i:
                     continue
                 for m in range(3):
-                    if tri[3 * j + (m + 1) % 3] == v and tri[3 * j + (m + 2) % 3] == u:
-                        nbr[3 * i + k] = j
+                    if M[8 * j + (m + 1) % 3] == v and M[8 * j + (m + 2) % 3] == u:
+                        M[8 * i + 3 + k] = j
 
 
 @njit(cache=True)
-def seed(a, b, c, X, Y, tri, nbr, state, w):
+def seed(a, b, c, P, M, state, w):
     """Start the mesh with the non-degenerate triangle (a, b, c) and its three ghosts."""
-    if orient2d_nb(X[a], Y[a], X[b], Y[b], X[c], Y[c], w) < 0:
+    if orient2d_nb(P[a, 0], P[a, 1], P[b, 0], P[b, 1], P[c, 0], P[c, 1], w) < 0:
         b, c = c, b
     vs = (a, b, c)
-    tri[0] = a
-    tri[1] = b
-    tri[2] = c
+    M[0] = a
+    M[1] = b
+    M[2] = c
     for k in range(3):
         u = vs[k]
         v = vs[(k + 1) % 3]
         g = k + 1
-        tri[3 * g] = v
-        tri[3 * g + 1] = u
-        tri[3 * g + 2] = INF
-    _link_brute(tri, nbr, np.arange(4))
+        M[8 * g] = v
+        M[8 * g + 1] = u
+        M[8 * g + 2] = INF
+    _link_brute(M, np.arange(4))
     state[S_NTRI] = 4
     state[S_LAST] = 0
 
 
 @njit(cache=True)
-def build(X, Y, tri, nbr, mark, stack, bad, ba, bb, bo, start_of, state, dup, w):
+def build(P, M, stack, bad, ba, bb, bo, start_of, state, dup, w):
     """Triangulate vertices 0..n-1 in index order.  ``dup[i]`` receives the vertex that i
     duplicates (or -1).  Returns False when every point is collinear (nothing built)."""
-    n = X.shape[0]
+    n = P.shape[0]
     for i in range(n):
         dup[i] = -1
     # first two distinct points, then the first point off their line
     i1 = -1
     for i in range(1, n):
-        if X[i] != X[0] or Y[i] != Y[0]:
+        if P[i, 0] != P[0, 0] or P[i, 1] != P[0, 1]:
             i1 = i
             break
     if i1 < 0:
         return False
     i2 = -1
     for i in range(i1 + 1, n):
-        if orient2d_nb(X[0], Y[0], X[i1], Y[i1], X[i], Y[i], w) != 0:
+        if orient2d_nb(P[0, 0], P[0, 1], P[i1, 0], P[i1, 1], P[i, 0], P[i, 1], w) != 0:
             i2 = i
             break
     if i2 < 0:
         return False
-    seed(0, i1, i2, X, Y, tri, nbr, state, w)
+    seed(0, i1, i2, P, M, state, w)
     for p in range(1, n):
         if p == i1 or p == i2:
             continue
-        dup[p] = insert(p, X, Y, tri, nbr, mark, stack, bad, ba, bb, bo, start_of, state, w)
+        dup[p] = insert(p, P, M, stack, bad, ba, bb, bo, start_of, state, w)
     return True
 
 
 @njit(cache=True)
-def extract(tri, nbr, ntri):
-    """Compact the real triangles: returns (simplices, neighbors, internal->output map)."""
-    out_of = np.full(ntri, -1, dtype=np.int64)
+def extract(M, ntri, label):
+    """Compact the real triangles: returns (simplices, neighbors, internal->output map).
+
+    Vertex v is written as ``label[v]`` (the input index it stands for)."""
+    out_of = np.empty(ntri, dtype=np.int64)
     m = 0
     for t in range(ntri):
-        if tri[3 * t] != DEAD and not _is_ghost(tri, t):
+        if M[8 * t] != DEAD and not _is_ghost(M, t):
             out_of[t] = m
             m += 1
+        else:
+            out_of[t] = -1
     simp = np.empty((m, 3), dtype=np.int64)
     neig = np.empty((m, 3), dtype=np.int64)
     for t in range(ntri):
@@ -282,47 +290,71 @@ def extract(tri, nbr, ntri):
         if r < 0:
             continue
         for k in range(3):
-            simp[r, k] = tri[3 * t + k]
-            o = nbr[3 * t + k]
+            simp[r, k] = label[M[8 * t + k]]
+            o = M[8 * t + 3 + k]
             neig[r, k] = out_of[o]
     return simp, neig, out_of
 
 
 @njit(cache=True)
-def hull_cycle(tri, nbr, ntri, nverts):
-    """Vertices of the convex hull in counter-clockwise order (from the ghost triangles)."""
+def hull_cycle(M, ntri, nverts, label):
+    """Hull vertices counter-clockwise (from the ghost triangles), as ``label[v]``, starting
+    at the smallest label."""
     nxt = np.full(nverts, -1, dtype=np.int64)
     first = -1
     count = 0
     for t in range(ntri):
-        if tri[3 * t] == DEAD:
+        if M[8 * t] == DEAD:
             continue
         for k in range(3):
-            if tri[3 * t + k] == INF:
+            if M[8 * t + k] == INF:
                 # ghost (x, y, INF) in cyclic order sits on hull edge y -> x
-                x = tri[3 * t + (k + 1) % 3]
-                y = tri[3 * t + (k + 2) % 3]
+                x = M[8 * t + (k + 1) % 3]
+                y = M[8 * t + (k + 2) % 3]
                 nxt[y] = x
                 first = y
                 count += 1
-    out = np.empty(count, dtype=np.int64)
+    # start at the smallest label so that the answer does not depend on the insertion order
     v = first
+    best = first
     for i in range(count):
-        out[i] = v
+        if label[v] < label[best]:
+            best = v
+        v = nxt[v]
+    out = np.empty(count, dtype=np.int64)
+    v = best
+    for i in range(count):
+        out[i] = label[v]
         v = nxt[v]
     return out
 
 
 @njit(cache=True)
-def find(tri, nbr, X, Y, qx, qy, start, w, state):
-    """For each query point, a real triangle containing it, or -1 outside the hull."""
-    res = np.empty(qx.shape[0], dtype=np.int64)
+def smallest_labels(order, dup):
+    """rep[v] = the smallest input index among the points equal to vertex v."""
+    n = order.shape[0]
+    best = order.copy()
+    for v in range(n):
+        r = dup[v]
+        if r >= 0 and order[v] < best[r]:
+            best[r] = order[v]
+    rep = np.empty(n, dtype=np.int64)
+    for v in range(n):
+        r = dup[v]
+        rep[v] = best[r] if r >= 0 else best[v]
+    return rep
+
+
+@njit(cache=True)
+def find(M, P, Q, start, w, state):
+    """For each query point Q[i], a real triangle containing it, or -1 outside the hull."""
+    res = np.empty(Q.shape[0], dtype=np.int64)
     t = start
-    for i in range(qx.shape[0]):
-        t = locate(tri, nbr, X, Y, qx[i], qy[i], t, w, state)
-        if _is_ghost(tri, t):
+    for i in range(Q.shape[0]):
+        t = locate(M, P, Q[i, 0], Q[i, 1], t, w, state)
+        if _is_ghost(M, t):
             res[i] = -1
-            t = real_neighbour_of_ghost(tri, nbr, t)
+            t = real_neighbour_of_ghost(M, t)
         else:
             res[i] = t
     return res

@@ -73,11 +73,12 @@ Two details a careful reader will ask about:
   short.  ``order="input"`` inserts in the given order instead (for dry runs
   and click-to-add widgets), with the same tie caveat.
 
-Finding the bad triangles: the tutorial tests every triangle (``locate="scan"``
-does exactly that: quadratic time on every input).  The default
-``locate="walk"`` finds one bad triangle by walking from the last new triangle
-towards p, then collects the others through neighbours (the bad triangles
-always form one connected region around p).  Both give the same triangles.
+Finding the bad triangles: the tutorial tests every triangle, and so does the
+default ``locate="scan"`` (quadratic time on every input: this is the version
+the complexity lesson measures).  ``locate="walk"`` finds one bad triangle by
+walking from the last new triangle towards p, then collects the others through
+neighbours (the bad triangles always form one connected region around p): the
+first step towards the fast version.  Both give the same triangles.
 
 >>> bowyer_watson([(0, 0), (1, 0), (0, 1), (1, 1), (0, 0)]).tolist()   # duplicate (0, 0) merged
 [[0, 1, 3], [0, 3, 2]]
@@ -424,7 +425,7 @@ class _Triangulation:
 
 
 # ----------------------------------------------------------------------------- the algorithm
-def bowyer_watson(points, *, trace: list | None = None, locate: str = "walk",
+def bowyer_watson(points, *, trace: list | None = None, locate: str = "scan",
                   order: str = "canonical") -> np.ndarray:
     """Delaunay triangulation by Bowyer-Watson: (m, 3) int64 counter-clockwise triangles.
 
@@ -436,8 +437,9 @@ def bowyer_watson(points, *, trace: list | None = None, locate: str = "walk",
 
     ``trace``: a list; one ``Step`` per inserted point is appended to it
     (nothing when there is no triangle to build).
-    ``locate``: ``"walk"`` (default) or ``"scan"`` (test every triangle, as the
-    tutorial does: same result, quadratic time).
+    ``locate``: ``"scan"`` (default: test every triangle, as the tutorial does;
+    quadratic time) or ``"walk"`` (walk to the point, then grow the cavity
+    through neighbours: same result, much faster).
     ``order``: ``"canonical"`` (default: the result does not depend on the input
     order, even with cocircular ties) or ``"input"`` (see ``insertion_order``).
 

@@ -63,11 +63,8 @@ class Delaunay:
     def _alloc(self, nverts: int, ntris: int) -> None:
         self._cap_v = nverts
         self._cap_t = ntris
-        self._X = np.empty(nverts)
-        self._Y = np.empty(nverts)
-        self._tri = np.full(3 * ntris, _mesh.DEAD, dtype=_ITYPE)
-        self._nbr = np.full(3 * ntris, -1, dtype=_ITYPE)
-        self._mark = np.zeros(ntris, dtype=_ITYPE)
+        self._P = np.empty((nverts, 2))                  # coordinates in insertion order
+        self._M = np.zeros(_mesh.RECORD * ntris, dtype=_ITYPE)   # the mesh: see _mesh.py
         self._stack = np.empty(ntris, dtype=_ITYPE)
         self._bad = np.empty(ntris, dtype=_ITYPE)
         self._ba = np.empty(ntris, dtype=_ITYPE)
@@ -80,30 +77,26 @@ class Delaunay:
         n = len(pts)
         self._order = insertion_order(pts)               # internal vertex i = input point order[i]
         self._alloc(max(n, 4), 2 * n + 8)
-        self._X[:n] = pts[self._order, 0]
-        self._Y[:n] = pts[self._order, 1]
+        self._P[:n] = pts[self._order]
         self._n = n
         self._state = np.zeros(_mesh.STATE_SIZE, dtype=np.int64)
         self._dup = np.full(max(n, 1), -1, dtype=np.int64)
         self._w = workspace()
         self._flat = n < 3 or not _mesh.build(
-            self._X[:n], self._Y[:n], self._tri, self._nbr, self._mark, self._stack, self._bad,
+            self._P[:n], self._M, self._stack, self._bad,
             self._ba, self._bb, self._bo, self._start_of, self._state, self._dup, self._w)
         if self._flat:
-            self._dup[:n] = _equal_point_roots(self._X[:n], self._Y[:n])
+            self._dup[:n] = _equal_point_roots(self._P[:n, 0], self._P[:n, 1])
         self._cache = {}
 
     def _grow(self) -> None:
         """Double the capacity, keeping the mesh (used by ``insert``)."""
-        old = (self._X, self._Y, self._tri, self._nbr, self._mark, self._dup)
+        old = (self._P, self._M, self._dup)
         nt = self._state[_mesh.S_NTRI]
         self._alloc(2 * self._cap_v, 2 * self._cap_t)
-        self._X[:self._n] = old[0][:self._n]
-        self._Y[:self._n] = old[1][:self._n]
-        self._tri[:3 * nt] = old[2][:3 * nt]
-        self._nbr[:3 * nt] = old[3][:3 * nt]
-        self._mark[:nt] = old[4][:nt]
-        self._dup = np.concatenate([old[5], np.full(len(old[5]), -1, dtype=np.int64)])
+        self._P[:self._n] = old[0][:self._n]
+        self._M[:_mesh.RECORD * nt] = old[1][:_mesh.RECORD * nt]
+        self._dup = np.concatenate([old[2], np.full(len(old[2]), -1, dtype=np.int64)])
 
     # ------------------------------------------------------------------ results
     def _result(self):
@@ -116,29 +109,21 @@ class Delaunay:
                 out_of = np.zeros(0, dtype=np.int64)
             else:
                 nt = int(self._state[_mesh.S_NTRI])
-                simp, neig, out_of = _mesh.extract(self._tri, self._nbr, nt)
-                simp = rep[simp]
-                hull = rep[_mesh.hull_cycle(self._tri, self._nbr, nt, self._n)]
-                hull = np.roll(hull, -int(np.argmin(hull)))
+                simp, neig, out_of = _mesh.extract(self._M, nt, rep)
+                hull = _mesh.hull_cycle(self._M, nt, self._n, rep)
             self._cache.update(simplices=simp, neighbors=neig, hull=hull, out_of=out_of, rep=rep)
         return self._cache
 
     def _representatives(self) -> np.ndarray:
         """rep[internal vertex] = smallest input index among the points equal to it."""
-        n = self._n
-        order = self._order[:n]
-        dup = self._dup[:n]
-        root = np.where(dup >= 0, dup, np.arange(n))
-        rep_of_root = np.full(n, np.iinfo(np.int64).max, dtype=np.int64)
-        np.minimum.at(rep_of_root, root, order)
-        return rep_of_root[root]
+        return _mesh.smallest_labels(self._order[:self._n], self._dup[:self._n])
 
     def _collinear_chain(self, rep: np.ndarray) -> np.ndarray:
         n = self._n
         if n == 0:
             return np.zeros(0, dtype=np.int64)
         internal = np.flatnonzero(self._dup[:n] < 0)      # distinct points
-        keys = np.lexsort((self._Y[internal], self._X[internal]))
+        keys = np.lexsort((self._P[internal, 1], self._P[internal, 0]))
         return rep[internal[keys]]
 
     @property
@@ -202,8 +187,7 @@ class Delaunay:
         if self._flat:
             res = np.full(len(qs), -1, dtype=np.int64)
         else:
-            res = self._cache_out_of()[_mesh.find(self._tri, self._nbr, self._X, self._Y,
-                                                  qs[:, 0].copy(), qs[:, 1].copy(),
+            res = self._cache_out_of()[_mesh.find(self._M, self._P, qs,
                                                   int(self._state[_mesh.S_LAST]), self._w,
                                                   np.zeros(_mesh.STATE_SIZE, dtype=np.int64))]
             res = np.where(res >= 0, res, -1)
@@ -229,13 +213,12 @@ class Delaunay:
             return idx
         if self._n + 1 > self._cap_v or self._state[_mesh.S_NTRI] + 2 > self._cap_t:
             self._grow()
-        self._X[idx] = q[0]
-        self._Y[idx] = q[1]
+        self._P[idx] = q
         self._order = np.append(self._order, idx)
         self._n += 1
         if len(self._dup) < self._n:
             self._dup = np.concatenate([self._dup, np.full(len(self._dup), -1, dtype=np.int64)])
-        self._dup[idx] = _mesh.insert(idx, self._X, self._Y, self._tri, self._nbr, self._mark,
+        self._dup[idx] = _mesh.insert(idx, self._P, self._M,
                                       self._stack, self._bad, self._ba, self._bb, self._bo,
                                       self._start_of, self._state, self._w)
         self._cache = {}

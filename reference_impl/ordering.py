@@ -102,10 +102,11 @@ def insertion_order(points: np.ndarray, brio: bool = True) -> np.ndarray:
     x = np.ascontiguousarray(points[:, 0])
     y = np.ascontiguousarray(points[:, 1])
     xmin, ymin = x.min(), y.min()
-    span = max(x.max() - xmin, y.max() - ymin)
-    inv = 1.0 / span if span > 0 and np.isfinite(1.0 / span) else 0.0
-    if span > 0 and not np.isfinite(span):  # 1e308-scale spans overflow: scale down first
-        return insertion_order(points * 2.0 ** -8, brio)
+    with np.errstate(over="ignore"):
+        span = max(x.max() - xmin, y.max() - ymin)
+        if span > 0 and not np.isfinite(span):  # 1e308-scale spans overflow: scale down first
+            return insertion_order(points * 2.0 ** -8, brio)
+        inv = 1.0 / span if span > 0 and np.isfinite(1.0 / span) else 0.0
     rounds = max(1, int(np.log2(max(n, 1))) - 6) if brio else 1
     rounds = min(rounds, 31)
     keys = _keys(x, y, x.view(np.uint64), y.view(np.uint64), xmin, ymin, inv, _BITS, rounds)

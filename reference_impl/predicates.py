@@ -12,12 +12,14 @@ arithmetic and fast robust geometric predicates", 1997):
    a proven error bound; almost every call ends here.  The bound assumes no
    underflow or overflow, so the filter only answers when the magnitudes are in
    a safe range (this is what makes 1e-300 and 1e300 inputs right).
-2. Otherwise the determinant is recomputed exactly with expansion arithmetic
+2. If the coordinate differences are exact small integers (integer grids, where
+   almost every test is a tie), the plain determinant is computed without any
+   rounding, so its sign is exact: ties stay cheap.
+3. Otherwise the determinant is recomputed exactly with expansion arithmetic
    (``expansion.py``) after scaling all coordinates by one power of two (which
-   does not change the sign).  When the input differences are exact, as on
-   integer grids, the expansions stay one or two components long, so ties stay
-   cheap.
-3. If the coordinates of one call span more than 2**150 in magnitude (so that
+   does not change the sign).  When the input differences are exact the
+   expansions stay one or two components long.
+4. If the coordinates of one call span more than 2**150 in magnitude (so that
    expansion components could underflow), the sign is computed with Python
    integers instead (a numba ``objmode`` block).  This is the rare path.
 
@@ -39,7 +41,7 @@ import numba
 import numpy as np
 from numba import njit
 
-from .expansion import EPSILON, add, diff, mul, negate
+from .expansion import EPSILON, add, diff, mul, negate, two_diff
 
 __all__ = ["orient2d", "incircle", "orient2d_nb", "incircle_nb", "workspace", "WORKSPACE_SIZE"]
 
@@ -51,6 +53,8 @@ _O_LO, _O_HI = 2.0 ** -900, 2.0 ** 1000   # orient: |detleft| + |detright|
 _I_DMAX = 2.0 ** 150                       # incircle: largest |difference|
 _I_LO = 2.0 ** -600                        # incircle: permanent
 _EXACT_MIN = 2.0 ** -150                   # exact stage: smallest scaled non-zero coordinate
+_O_INT = 2.0 ** 25                         # integer stage bounds on |differences|
+_I_INT = 2.0 ** 11
 
 WORKSPACE_SIZE = 8192
 # Layout of the incircle scratch (offsets into the workspace).  Sizes are the
@@ -104,7 +108,24 @@ def _scale_exponent(v):
 
 # --------------------------------------------------------------------- orient2d
 @njit(cache=True)
+def _small_integer(d, limit):
+    """True when d is an integer with |d| < limit (then products of such stay exact)."""
+    return abs(d) < limit and d == math.floor(d)
+
+
+@njit(cache=True)
 def _orient_exact(ax, ay, bx, by, cx, cy, w):
+    # Stage "integer": when the differences are exact small integers (integer grids), the
+    # plain determinant has no rounding error at all (products < 2**52, sum < 2**53).
+    acx, t1 = two_diff(ax, cx)
+    bcy, t2 = two_diff(by, cy)
+    acy, t3 = two_diff(ay, cy)
+    bcx, t4 = two_diff(bx, cx)
+    if (t1 == 0.0 and t2 == 0.0 and t3 == 0.0 and t4 == 0.0
+            and _small_integer(acx, _O_INT) and _small_integer(bcy, _O_INT)
+            and _small_integer(acy, _O_INT) and _small_integer(bcx, _O_INT)):
+        det = acx * bcy - acy * bcx
+        return 1 if det > 0.0 else (-1 if det < 0.0 else 0)
     v = w[_V:_V + 6]
     v[0] = ax; v[1] = ay; v[2] = bx; v[3] = by; v[4] = cx; v[5] = cy
     k, ok = _scale_exponent(v)
@@ -151,6 +172,22 @@ def orient2d_nb(ax, ay, bx, by, cx, cy, w):
 # --------------------------------------------------------------------- incircle
 @njit(cache=True)
 def _incircle_exact(ax, ay, bx, by, cx, cy, dx, dy, w):
+    # Stage "integer" (see _orient_exact): |differences| < 2**12 keeps every term of the
+    # determinant below 2**50 and the sum below 2**53, so the plain formula is exact.
+    adx, t1 = two_diff(ax, dx)
+    ady, t2 = two_diff(ay, dy)
+    bdx, t3 = two_diff(bx, dx)
+    bdy, t4 = two_diff(by, dy)
+    cdx, t5 = two_diff(cx, dx)
+    cdy, t6 = two_diff(cy, dy)
+    if (t1 == 0.0 and t2 == 0.0 and t3 == 0.0 and t4 == 0.0 and t5 == 0.0 and t6 == 0.0
+            and _small_integer(adx, _I_INT) and _small_integer(ady, _I_INT)
+            and _small_integer(bdx, _I_INT) and _small_integer(bdy, _I_INT)
+            and _small_integer(cdx, _I_INT) and _small_integer(cdy, _I_INT)):
+        det = ((adx * adx + ady * ady) * (bdx * cdy - cdx * bdy)
+               + (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy)
+               + (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady))
+        return 1 if det > 0.0 else (-1 if det < 0.0 else 0)
     v = w[_V:_V + 8]
     v[0] = ax; v[1] = ay; v[2] = bx; v[3] = by; v[4] = cx; v[5] = cy; v[6] = dx; v[7] = dy
     k, ok = _scale_exponent(v)

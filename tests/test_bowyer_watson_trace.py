@@ -270,9 +270,9 @@ def test_dry_run_text_for_the_tutorial_points():
         "Step 3 (point 2). insert (5, 1): 1 bad triangle, cavity boundary of 3 edges, 3 new triangles",
         "Step 4 (point 3). insert (4, 4): 2 bad triangles, cavity boundary of 4 edges, 4 new triangles",
     ]
-    assert "   bad triangles (circumcircle contains the point): (1, 2, inf), (0, 1, inf)" in lines
-    assert "   cavity boundary (counter-clockwise): 1->2, 2->inf, inf->0, 0->1" in lines
-    assert "   new triangles: (1, 2, 3), (3, 2, inf), (0, 3, inf), (0, 1, 3)" in lines
+    assert "   bad triangles (circumcircle contains the point): (0, 1, inf), (1, 2, inf)" in lines
+    assert "   cavity boundary (counter-clockwise): 0->1, 1->2, 2->inf, inf->0" in lines
+    assert "   new triangles: (0, 1, 3), (1, 2, 3), (3, 2, inf), (0, 3, inf)" in lines
     assert lines[-1] == "Result: 3 triangles: (0, 1, 3), (0, 2, 1), (1, 2, 3)"
     # the result line is the Fraction brute force
     printed = re.findall(r"\((\d+), (\d+), (\d+)\)", lines[-1])
