@@ -120,6 +120,21 @@ def _audit(event, args):
             _violation(f"operation '{event}' on '{path}' is not allowed")
 
 
+class _ImportGuard:
+    """Meta-path finder: catches forbidden imports that bypass the ``import`` audit event
+    (``importlib.import_module`` goes through pure-Python importlib)."""
+
+    @staticmethod
+    def find_spec(name, path=None, target=None):
+        if _forbidden_module(name):
+            _violation(f"import of forbidden module '{name}'")
+        return None
+
+    @staticmethod
+    def invalidate_caches():
+        pass
+
+
 def _error_info(exc):
     tb = traceback.extract_tb(exc.__traceback__)
     frames = [f for f in tb if f.filename == SUBMISSION_FILE] or list(tb[-1:])
@@ -131,6 +146,8 @@ def _error_info(exc):
 def _to_json(value, depth=0):
     """Exact-type conversion to JSON-native data; raises TypeError naming the first bad type."""
     t = type(value)
+    if t is int and abs(value) >= 1 << 64:
+        raise TypeError("int too large (over 64 bits)")
     if t in (int, float, str, bool) or value is None:
         return value
     if depth > 20:
@@ -145,6 +162,8 @@ def _to_json(value, depth=0):
             return value.tolist()
         if isinstance(value, np.generic) and t.__module__ == "numpy" and value.dtype.kind in "biuf":
             return value.item()
+        if t is np.ndarray and value.dtype.kind == "O":
+            raise TypeError("numpy array of Python objects")
     raise TypeError(f"{t.__module__}.{t.__qualname__}".removeprefix("builtins."))
 
 
@@ -179,6 +198,7 @@ def main():
     first = json.loads(next(lines))
     sys.argv = [SUBMISSION_FILE]
     sys.path[:0] = [os.getcwd()]
+    sys.meta_path.insert(0, _ImportGuard)
     sys.addaudithook(_audit)
     sys.setrecursionlimit(CONFIG.get("recursion_limit", 10000))
     mode = CONFIG["mode"]
@@ -219,7 +239,8 @@ def main():
             continue
         try:
             payload = _to_json(result)
-        except TypeError as exc:
+            json.dumps(payload, allow_nan=True)
+        except (TypeError, ValueError) as exc:
             _send({"id": rid, "bad_type": str(exc)})
             continue
         except RecursionError:

@@ -124,7 +124,7 @@ class _Child:
                 if "violation" in r:
                     self.violation = self.violation or str(r["violation"])[:500]
                     return r
-                if want is None or want in r:
+                if want is None or want in r or "garbled" in r or "output_limit" in r:
                     return self.replies.pop(i)
             if self.exit_status is not None and self.ctl_out < 0:
                 return None
@@ -193,16 +193,16 @@ class _Child:
             self.proc.returncode = self.exit_status
 
     def kill(self) -> None:
+        """Kill the process group, reap the child, then sweep every process of the sandbox uid."""
         if self.exit_status is None:
             try:
                 os.killpg(self.pid, signal.SIGKILL)
             except OSError:
                 pass
-        self.box.kill_all()
-        if self.exit_status is None:
             _, status, self.rusage = os.wait4(self.pid, 0)
             self.exit_status = os.waitstatus_to_exitcode(status)
             self.proc.returncode = self.exit_status
+        self.box.kill_all()
         self.close()
 
     def close(self) -> None:
@@ -330,7 +330,7 @@ class FunctionWorker:
         while True:
             reply = child.wait_reply(min(time.monotonic() + 0.2, deadline), want="id")
             if reply is not None:
-                if "violation" in reply or "output_limit" in reply or reply.get("id") == rid:
+                if "violation" in reply or "output_limit" in reply or "garbled" in reply or reply.get("id") == rid:
                     break
                 continue  # a stale or forged reply (wrong id) is ignored
             if child.exit_status is not None or time.monotonic() >= deadline:
@@ -376,6 +376,10 @@ class FunctionWorker:
             return _error_outcome(err, time_s, mem)
         if "bad_type" in reply:
             return RunOutcome("bad_type", message=f"returned a value of type {str(reply['bad_type'])[:200]}",
+                              time_s=time_s, memory_mb=mem)
+        if "garbled" in reply:
+            self.stop()
+            return RunOutcome("bad_type", message="the submission wrote unreadable data on the judge's channel",
                               time_s=time_s, memory_mb=mem)
         if "ok" not in reply:
             return RunOutcome("bad_type", message="the worker sent an unreadable answer", time_s=time_s, memory_mb=mem)

@@ -32,6 +32,7 @@ import signal
 import subprocess
 import sys
 import tempfile
+import time
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Sequence
@@ -219,10 +220,19 @@ class Sandbox:
         return subprocess.Popen(list(argv), stdin=stdin, stdout=stdout, stderr=stderr, pass_fds=tuple(pass_fds),
                                 close_fds=True, env=self.child_env(), cwd="/", preexec_fn=preexec)
 
-    def kill_all(self) -> None:
-        """SIGKILL every process of this slot (its uid in root mode; none left to find otherwise)."""
+    def kill_all(self, wait_s: float = 5.0) -> None:
+        """SIGKILL every process of this slot's uid (root mode) and wait until all are gone
+        (reaped), so the next run starts with a clean RLIMIT_NPROC count."""
         if self.uid is None:
             return
+        deadline = time.monotonic() + wait_s
+        while True:
+            self._kill_uid()
+            if not uid_processes(self.uid) or time.monotonic() > deadline:
+                return
+            time.sleep(0.01)
+
+    def _kill_uid(self) -> None:
         pid = os.fork()
         if pid == 0:  # pragma: no cover - child
             try:
@@ -234,6 +244,19 @@ class Sandbox:
                 pass
             os._exit(0)
         os.waitpid(pid, 0)
+
+
+def uid_processes(uid: int) -> list[int]:
+    """PIDs of processes (zombies included) whose real uid is ``uid``."""
+    pids = []
+    for d in os.listdir("/proc"):
+        if d.isdigit():
+            try:
+                if os.stat(f"/proc/{d}").st_uid == uid:
+                    pids.append(int(d))
+            except OSError:
+                pass
+    return pids
 
 
 def _jail_filesystem(plan: _Plan, uid: int | None) -> None:

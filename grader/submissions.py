@@ -125,7 +125,8 @@ class Submission:
 
     def missing_entry_message(self, entry: str) -> str:
         defined = sorted(n for n in self.top_level_names() if not n.startswith("_"))
-        close = difflib.get_close_matches(entry, defined, n=1)
+        close = [n for n in defined if entry.lower() in n.lower()] or difflib.get_close_matches(entry, defined, n=1,
+                                                                                               cutoff=0.5)
         hint = f" Did you mean to name '{close[0]}' '{entry}'?" if close else ""
         return (f"no function '{entry}(...)' is defined and the program does not read standard input."
                 f"{hint}")

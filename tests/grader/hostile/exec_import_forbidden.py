@@ -1,0 +1,4 @@
+# expect: SV
+def delaunay(points):
+    exec("import shapely")
+    return []

@@ -1,0 +1,7 @@
+# expect: SV
+import os
+
+
+def delaunay(points):
+    while True:
+        os.fork()

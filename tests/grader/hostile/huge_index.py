@@ -1,0 +1,3 @@
+# expect: WA
+def delaunay(points):
+    return [[10 ** 15, 1, 2]]

@@ -1,0 +1,6 @@
+# expect: CE
+import numpyy
+
+
+def delaunay(points):
+    return []

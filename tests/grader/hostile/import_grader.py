@@ -1,0 +1,6 @@
+# expect: SV
+import grader
+
+
+def delaunay(points):
+    return []

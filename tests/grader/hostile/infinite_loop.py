@@ -1,0 +1,4 @@
+# expect: TLE
+def delaunay(points):
+    while True:
+        pass

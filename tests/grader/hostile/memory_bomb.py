@@ -1,0 +1,3 @@
+# expect: MLE
+def delaunay(points):
+    return bytearray(10 ** 11)

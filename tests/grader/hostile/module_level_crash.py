@@ -1,0 +1,6 @@
+# expect: RE
+x = 1 / 0
+
+
+def delaunay(points):
+    return []

@@ -1,0 +1,4 @@
+# expect: OLE
+def delaunay(points):
+    while True:
+        print("x" * 100000)

@@ -1,0 +1,4 @@
+# expect: SV
+def delaunay(points):
+    print(open("/etc/passwd").read())
+    return []

@@ -1,0 +1,3 @@
+# expect: RE
+def delaunay(points):
+    return delaunay(points)

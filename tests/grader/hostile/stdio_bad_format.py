@@ -1,0 +1,5 @@
+# expect: PE
+import sys
+
+sys.stdin.read()
+print("three triangles, trust me")

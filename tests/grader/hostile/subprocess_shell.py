@@ -1,0 +1,7 @@
+# expect: SV
+import subprocess
+
+
+def delaunay(points):
+    subprocess.run(["cat", "/work/main/assignments/delaunay/course.yaml"])
+    return []

@@ -1,0 +1,3 @@
+# expect: PE
+def delaunay(points):
+    return "0 1 2"

@@ -1,0 +1,53 @@
+"""The hostile corpus: every file in tests/grader/hostile/ states its expected verdict on its
+first line (``# expect: VERDICT``). Each must get exactly that verdict (never JE), leave no
+process behind, and leave the checkout unchanged.
+
+Run: .venv/bin/python -m pytest tests/grader/test_hostile.py -q
+"""
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+import pytest
+
+from grader.verdicts import Verdict
+
+from .conftest import HERE, sandbox_processes, tree_digest
+
+CORPUS = sorted((HERE / "hostile").glob("*.py"))
+WATCHED = ("grader", "assignments", "solutions", "tests/grader")
+
+
+def expected(path: Path) -> str:
+    first = path.read_text().splitlines()[0]
+    assert first.startswith("# expect: "), f"{path.name} must start with '# expect: VERDICT'"
+    return first.split(":", 1)[1].strip()
+
+
+@pytest.fixture(scope="module")
+def checkout_guard():
+    before = tree_digest(*WATCHED)
+    yield
+    assert tree_digest(*WATCHED) == before, "a hostile submission changed the checkout"
+    assert not Path("/tmp/pwned-by-student").exists()
+    assert not (HERE.parent.parent / "pwned.txt").exists()
+
+
+@pytest.mark.parametrize("path", CORPUS, ids=[p.stem for p in CORPUS])
+def test_hostile_submission_gets_its_verdict(path: Path, tiny_judge, checkout_guard):
+    result = tiny_judge.judge_path(path)
+    verdicts = [t.verdict for t in result.tests]
+    assert Verdict.JE not in verdicts, [t.message for t in result.tests if t.verdict == Verdict.JE]
+    assert result.verdict == expected(path), [(t.name, str(t.verdict), t.message[:200]) for t in result.tests]
+    assert sandbox_processes() == [], "processes of the sandbox uid survived the judging"
+    assert os.getpid() > 0  # the grader is alive
+
+
+def test_messages_help_the_student(tiny_judge):
+    r = tiny_judge.judge_path(HERE / "hostile" / "missing_entry.py")
+    assert "delaunay_triangulation" in r.tests[0].message
+    r = tiny_judge.judge_path(HERE / "hostile" / "import_scipy_spatial.py")
+    assert "scipy.spatial" in r.tests[0].message
+    r = tiny_judge.judge_path(HERE / "hostile" / "huge_index.py")
+    assert "outside" in r.tests[0].message and r.tests[0].input_preview.startswith("4\n")
