@@ -212,3 +212,22 @@ def test_jit_cache_works_when_the_package_directory_is_read_only(tmp_path):
     assert not list(pkg.rglob("*.nbi")), "nothing may be written into the read-only package"
     assert list(home.rglob("*.nbi")), "the cache should fall back to the user's cache directory"
     assert second < first
+
+
+def test_hilbert_curve_visits_every_cell_with_unit_steps():
+    from reference_impl.ordering import hilbert_index
+    for bits in (1, 2, 3, 5):
+        m = 1 << bits
+        pos = {hilbert_index(x, y, bits): (x, y) for x in range(m) for y in range(m)}
+        assert sorted(pos) == list(range(m * m))
+        for d in range(m * m - 1):
+            (x0, y0), (x1, y1) = pos[d], pos[d + 1]
+            assert abs(x0 - x1) + abs(y0 - y1) == 1
+
+
+def test_insertion_order_depends_only_on_the_point_set():
+    from reference_impl.ordering import insertion_order
+    pts = np.vstack([pointsets.uniform(500, 3), pointsets.grid(10)])
+    ref = pts[insertion_order(pts)]
+    perm = np.random.default_rng(0).permutation(len(pts))
+    assert (pts[perm][insertion_order(pts[perm])] == ref).all()
