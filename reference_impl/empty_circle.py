@@ -1,0 +1,277 @@
+"""Largest empty circle: the widest circle, centred in the convex hull, with no point inside.
+
+Use it from Python::
+
+    from reference_impl.empty_circle import largest_empty_circle
+    cx, cy, r = largest_empty_circle(points)
+
+or run the examples: ``python -m pytest --doctest-modules reference_impl/empty_circle.py``.
+
+>>> largest_empty_circle([(0, 0), (4, 0), (4, 4), (0, 4)])
+(2.0, 2.0, 2.8284271247461903)
+
+Why these candidates (Toussaint 1983).  Let d(x) be the distance from x to the
+nearest point and H the convex hull.  Inside the Voronoi cell of a point p,
+d(x) = |x - p| is a convex function, so its maximum over the convex polygon
+cell(p) ∩ H is at a vertex of that polygon.  Those vertices are
+
+1. Voronoi vertices inside H: the circumcentres of Delaunay triangles,
+   with r = the circumradius (the circumcircle is empty);
+2. points where a Voronoi edge crosses the hull boundary;
+3. hull vertices, where r = 0 (never the best when there is a triangle).
+
+Candidates 2 are found by walking along each hull edge u -> v through the
+Voronoi cells it crosses: start in the cell of u; from the cell of s, the edge
+leaves through the bisector of s and the Delaunay neighbour q that it meets
+first (smallest parameter t, among the q with (v - u).(q - s) > 0); record that
+crossing and continue in the cell of q, until the cell of v.  Each Voronoi edge
+crosses the boundary of the convex hull at most twice, so all walks together
+take O(n) steps.
+
+Exactness.  The walk's decisions (the sign of (v - u).(q - s), and which of two
+bisectors is crossed first) are made exactly: a floating-point filter with a
+proven error bound, and Python integers when it cannot decide.  The sign makes
+the projection of the current site on the edge strictly increase, so the walk
+always ends.  Which circumcentres lie in H is decided by exact orientation tests
+on the computed centres.  The centres and radii themselves are floating-point
+values (a few ulps of the coordinates, more for nearly flat triangles); they are
+computed after scaling all points by one power of two, so 1e-300 and 1e300
+inputs behave like 1.  Among equally large candidates the one with the
+smallest (x, y) is returned, and every computation starts from the points in a
+canonical order, so the answer does not depend on the input order.
+
+Degenerate input: one distinct point gives ``(x, y, 0.0)``; collinear points
+(two included) have a segment as hull, and the answer is the midpoint of the
+longest gap between consecutive points, with half its length as radius.  An
+empty input raises ``ValueError`` (there is no hull to put a centre in).
+"""
+from __future__ import annotations
+
+import math
+
+import numba
+import numpy as np
+from numba import njit
+
+from .delaunay import Delaunay
+from .expansion import EPSILON
+from .points import as_points
+from .predicates import orient2d_nb, workspace
+from .voronoi import _pow2_exponent, circumcentres, delaunay_adjacency
+
+__all__ = ["largest_empty_circle"]
+
+
+# --------------------------------------------------------------------- exact walk decisions
+def _dot_sign_exact(ux, uy, vx, vy, sx, sy, qx, qy) -> int:
+    from .verify import exact_coordinates
+    (ux, uy), (vx, vy), (sx, sy), (qx, qy) = exact_coordinates([(ux, uy), (vx, vy), (sx, sy), (qx, qy)])
+    d = (vx - ux) * (qx - sx) + (vy - uy) * (qy - sy)
+    return (d > 0) - (d < 0)
+
+
+def _first_crossing_exact(ux, uy, vx, vy, sx, sy, ax, ay, bx, by) -> int:
+    from .verify import exact_coordinates
+    (ux, uy), (vx, vy), (sx, sy), (ax, ay), (bx, by) = exact_coordinates(
+        [(ux, uy), (vx, vy), (sx, sy), (ax, ay), (bx, by)])
+    s2 = (sx - ux) ** 2 + (sy - uy) ** 2
+    na = (ax - ux) ** 2 + (ay - uy) ** 2 - s2
+    nb = (bx - ux) ** 2 + (by - uy) ** 2 - s2
+    da = (vx - ux) * (ax - sx) + (vy - uy) * (ay - sy)
+    db = (vx - ux) * (bx - sx) + (vy - uy) * (by - sy)
+    val = na * db - nb * da
+    return (val > 0) - (val < 0)
+
+
+_SAFE_LO = 2.0 ** -900   # below this, underflow could hide in the float filter
+
+
+@njit(cache=True)
+def _dot_sign(ux, uy, vx, vy, sx, sy, qx, qy):
+    """Exact sign of (v - u) . (q - s)."""
+    dx = vx - ux
+    dy = vy - uy
+    t1 = dx * (qx - sx)
+    t2 = dy * (qy - sy)
+    d = t1 + t2
+    mag = abs(t1) + abs(t2)
+    if mag > _SAFE_LO and abs(d) > 8.0 * EPSILON * mag:
+        return 1 if d > 0.0 else -1
+    if mag == 0.0:
+        return 0
+    with numba.objmode(r="int64"):
+        r = _dot_sign_exact(ux, uy, vx, vy, sx, sy, qx, qy)
+    return r
+
+
+@njit(cache=True)
+def _crossing_terms(ux, uy, vx, vy, sx, sy, qx, qy):
+    """N, |N|-bound, D, |D|-bound with t = N / (2 D) the parameter where the walk along
+    u -> v meets the bisector of s and q (N = |q - u|^2 - |s - u|^2, D = (v - u).(q - s))."""
+    ax = sx - ux
+    ay = sy - uy
+    bx = qx - ux
+    by = qy - uy
+    ex = qx - sx
+    ey = qy - sy
+    dx = vx - ux
+    dy = vy - uy
+    num = ex * (bx + ax) + ey * (by + ay)
+    mnum = abs(ex) * (abs(bx) + abs(ax)) + abs(ey) * (abs(by) + abs(ay))
+    den = dx * ex + dy * ey
+    mden = abs(dx * ex) + abs(dy * ey)
+    return num, mnum, den, mden
+
+
+@njit(cache=True)
+def _first_crossing(ux, uy, vx, vy, sx, sy, ax, ay, bx, by):
+    """Exact sign of t_a - t_b: which bisector (of s with a, or of s with b) the walk
+    along u -> v meets first.  Both (v - u).(a - s) and (v - u).(b - s) must be > 0."""
+    na, mna, da, mda = _crossing_terms(ux, uy, vx, vy, sx, sy, ax, ay)
+    nb, mnb, db, mdb = _crossing_terms(ux, uy, vx, vy, sx, sy, bx, by)
+    val = na * db - nb * da
+    bound = mna * mdb + mnb * mda
+    if bound > _SAFE_LO and abs(val) > 32.0 * EPSILON * bound:
+        return 1 if val > 0.0 else -1
+    with numba.objmode(r="int64"):
+        r = _first_crossing_exact(ux, uy, vx, vy, sx, sy, ax, ay, bx, by)
+    return r
+
+
+@njit(cache=True)
+def _boundary_candidates(X, Y, hull, ptr, nbr, cx, cy, cr):
+    """Walk every hull edge through the Voronoi cells it crosses; record each crossing
+    (centre and radius) in cx, cy, cr; return how many."""
+    h = hull.shape[0]
+    n = X.shape[0]
+    k = 0
+    for i in range(h):
+        u = hull[i]
+        v = hull[(i + 1) % h]
+        ux, uy, vx, vy = X[u], Y[u], X[v], Y[v]
+        s = u
+        steps = 0
+        while s != v:
+            best = -1
+            for j in range(ptr[s], ptr[s + 1]):
+                q = nbr[j]
+                if _dot_sign(ux, uy, vx, vy, X[s], Y[s], X[q], Y[q]) <= 0:
+                    continue
+                if best < 0 or _first_crossing(ux, uy, vx, vy, X[s], Y[s],
+                                               X[q], Y[q], X[best], Y[best]) < 0:
+                    best = q
+            steps += 1
+            if best < 0 or steps > n or k >= cx.shape[0]:
+                raise RuntimeError("largest_empty_circle: hull walk lost its way (internal error)")
+            num, _, den, _ = _crossing_terms(ux, uy, vx, vy, X[s], Y[s], X[best], Y[best])
+            t = min(max(num / (2.0 * den), 0.0), 1.0)
+            x = ux + t * (vx - ux)
+            y = uy + t * (vy - uy)
+            cx[k] = x
+            cy[k] = y
+            cr[k] = min(math.hypot(x - X[s], y - Y[s]), math.hypot(x - X[best], y - Y[best]))
+            k += 1
+            s = best
+    return k
+
+
+@njit(cache=True)
+def _in_hull(simp, nbrs, X, Y, qx, qy, todo, w):
+    """For each query i with todo[i], is (qx[i], qy[i]) in the closed hull?  Visibility
+    walk from triangle i (the query is the circumcentre of triangle i), exact orientations;
+    in a Delaunay triangulation this walk cannot cycle."""
+    m = simp.shape[0]
+    res = np.zeros(qx.shape[0], dtype=np.bool_)
+    for i in range(qx.shape[0]):
+        if not todo[i]:
+            continue
+        t = i
+        steps = 0
+        while t >= 0:
+            moved = False
+            for kk in range(3):
+                a = simp[t, (kk + 1) % 3]
+                b = simp[t, (kk + 2) % 3]
+                if orient2d_nb(X[a], Y[a], X[b], Y[b], qx[i], qy[i], w) < 0:
+                    t = nbrs[t, kk]
+                    moved = True
+                    break
+            if not moved:
+                res[i] = True
+                break
+            steps += 1
+            if steps > m:
+                raise RuntimeError("largest_empty_circle: point location walk cycled (internal error)")
+    return res
+
+
+# --------------------------------------------------------------------- candidates
+def _circumcircles(simp: np.ndarray, X: np.ndarray, Y: np.ndarray):
+    """Circumcentre and radius (the distance to the nearest of its three vertices) of
+    every triangle."""
+    px, py = circumcentres(simp, X, Y)
+    with np.errstate(over="ignore", invalid="ignore"):
+        r = np.min(np.hypot(px[:, None] - X[simp], py[:, None] - Y[simp]), axis=1)
+    return px, py, r
+
+
+def _best(cx: np.ndarray, cy: np.ndarray, r: np.ndarray) -> int:
+    """Index of the largest radius; ties go to the smallest (x, y)."""
+    top = np.flatnonzero(r == r.max())
+    return int(top[np.lexsort((cy[top], cx[top]))[0]])
+
+
+def _collinear_answer(chain: np.ndarray, X: np.ndarray, Y: np.ndarray) -> tuple[float, float, float]:
+    """Midpoint and half-length of the longest gap of a sorted collinear chain (scaled)."""
+    if len(chain) == 1:
+        return float(X[chain[0]]), float(Y[chain[0]]), 0.0
+    xs, ys = X[chain], Y[chain]
+    along = xs if xs[-1] != xs[0] else ys             # gaps are proportional to this coordinate
+    gap = np.diff(along)                              # rounding is monotone: the longest is a max
+    top = np.flatnonzero(gap == gap.max())
+    if len(top) > 1:                                  # settle float ties exactly
+        from fractions import Fraction
+        exact = [Fraction(float(along[i + 1])) - Fraction(float(along[i])) for i in top]
+        top = [top[exact.index(max(exact))]]
+    i = int(top[0])
+    ax, ay, bx, by = xs[i], ys[i], xs[i + 1], ys[i + 1]
+    return float(0.5 * ax + 0.5 * bx), float(0.5 * ay + 0.5 * by), float(0.5 * math.hypot(bx - ax, by - ay))
+
+
+def largest_empty_circle(points) -> tuple[float, float, float]:
+    """Centre and radius ``(cx, cy, r)`` of a largest circle with no point strictly inside,
+    whose centre lies in the convex hull of ``points``.
+
+    One distinct point gives radius 0; collinear points give the midpoint of the
+    longest gap.  Raises ``ValueError`` for empty or malformed input.
+
+    >>> largest_empty_circle([(0, 0), (2, 0), (1, 1)])       # right angle: centre on the hull
+    (1.0, 0.0, 1.0)
+    >>> largest_empty_circle([(0, 0), (1, 0), (4, 0)])       # collinear: the longest gap
+    (2.5, 0.0, 1.5)
+    >>> largest_empty_circle([(3, 4)])
+    (3.0, 4.0, 0.0)
+    """
+    pts = as_points(points)
+    if len(pts) == 0:
+        raise ValueError("points is empty: the largest empty circle needs at least one point")
+    d = Delaunay(pts)
+    k = _pow2_exponent(pts)
+    X = np.ldexp(pts[:, 0], -k)
+    Y = np.ldexp(pts[:, 1], -k)
+    simp = d.simplices
+    if len(simp) == 0:
+        cx, cy, r = _collinear_answer(d.hull, X, Y)
+        return float(np.ldexp(cx, k)), float(np.ldexp(cy, k)), float(np.ldexp(r, k))
+    ptr, nbr = delaunay_adjacency(d)
+    bcap = 6 * len(pts) + 16
+    bx, by, br = np.empty(bcap), np.empty(bcap), np.empty(bcap)
+    nb = _boundary_candidates(X, Y, d.hull.astype(np.int64), ptr, nbr, bx, by, br)
+    px, py, pr = _circumcircles(simp, X, Y)
+    ok = np.isfinite(px) & np.isfinite(py) & np.isfinite(pr)
+    ok = _in_hull(simp, d.neighbors, X, Y, px, py, ok, workspace())
+    cx = np.concatenate([bx[:nb], px[ok]])
+    cy = np.concatenate([by[:nb], py[ok]])
+    cr = np.concatenate([br[:nb], pr[ok]])
+    i = _best(cx, cy, cr)
+    return float(np.ldexp(cx[i], k)), float(np.ldexp(cy[i], k)), float(np.ldexp(cr[i], k))
