@@ -427,16 +427,22 @@ def laplacian_smooth(points, triangles, iterations: int = 1, fixed=None,
             raise ValueError(f"fixed must be point indices in 0..{n - 1}, got {idx.tolist()[:5]}")
         free[idx.astype(np.int64)] = False
     e = np.concatenate([T[:, [0, 1]], T[:, [1, 2]], T[:, [2, 0]]])
-    e = np.unique(np.sort(e, axis=1) @ np.array([n, 1], dtype=np.int64)) if len(e) else e
-    a, b = (e // n, e % n) if len(e) else (np.zeros(0, int), np.zeros(0, int))
-    deg = np.bincount(np.r_[a, b], minlength=n)
+    e = np.unique(np.sort(e, axis=1) @ np.array([n, 1], dtype=np.int64))
+    src, dst = np.r_[e // n, e % n], np.r_[e % n, e // n]    # each neighbour once, both ways
+    keep = free[src]
+    src, dst = src[keep], dst[keep]
     X = P.copy()
     for _ in range(iterations):
-        total = np.zeros_like(X)
-        np.add.at(total, a, X[b])
-        np.add.at(total, b, X[a])
         new = X.copy()
-        new[free] = total[free] / deg[free, None]
+        for c in range(2):
+            # sum each vertex's neighbours in increasing order of value, so that the
+            # rounding (and the result) does not depend on the numbering
+            val = X[dst, c]
+            order = np.lexsort((val, src))
+            s_sorted = src[order]
+            starts = np.flatnonzero(np.r_[True, s_sorted[1:] != s_sorted[:-1]]) if len(order) else order
+            sums = np.add.reduceat(val[order], starts) if len(order) else val
+            new[s_sorted[starts], c] = sums / np.diff(np.r_[starts, len(order)])
         if guard:
             moved = free.copy()
             while True:
