@@ -70,7 +70,11 @@ def fmt_row(label, best, count):
 
 
 MEM_CODE = textwrap.dedent("""
-    import resource, sys, numpy as np
+    import sys, numpy as np
+    def status(key):
+        for line in open("/proc/self/status"):
+            if line.startswith(key):
+                return int(line.split()[1])          # kB
     which, n = sys.argv[1], int(sys.argv[2])
     p = np.random.default_rng(0).random((n, 2))
     if which == "ours":
@@ -79,14 +83,16 @@ MEM_CODE = textwrap.dedent("""
         import triangle
     else:
         import scipy.spatial
-    base = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+    with open("/proc/self/clear_refs", "w") as f:
+        f.write("5")                                 # reset the peak (VmHWM) to the current RSS
+    base = status("VmRSS")
     if which == "ours":
         s = Delaunay(p).simplices
     elif which == "triangle":
         s = triangle.triangulate({"vertices": p})["triangles"]
     else:
         s = scipy.spatial.Delaunay(p).simplices
-    print((resource.getrusage(resource.RUSAGE_SELF).ru_maxrss - base) / 1024)
+    print((status("VmHWM") - base) / 1024)
 """)
 
 JIT_CODE = textwrap.dedent("""

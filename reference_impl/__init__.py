@@ -13,8 +13,12 @@ counter-clockwise point indices, as in scipy.spatial and Delaunator.
 >>> bowyer_watson([(1, 1), (3, 2), (5, 1), (4, 4)]).tolist()
 [[0, 1, 3], [0, 2, 1], [1, 2, 3]]
 """
-from .bowyer_watson import Step, bowyer_watson, dry_run
-from .delaunay import Delaunay
-from .predicates import incircle, orient2d
+from ._jitcache import purge_stale_cache
+
+purge_stale_cache()
+
+from .bowyer_watson import Step, bowyer_watson, dry_run  # noqa: E402
+from .delaunay import Delaunay  # noqa: E402
+from .predicates import incircle, orient2d  # noqa: E402
 
 __all__ = ["Delaunay", "bowyer_watson", "Step", "dry_run", "orient2d", "incircle"]

@@ -231,3 +231,35 @@ def test_insertion_order_depends_only_on_the_point_set():
     ref = pts[insertion_order(pts)]
     perm = np.random.default_rng(0).permutation(len(pts))
     assert (pts[perm][insertion_order(pts[perm])] == ref).all()
+
+
+def test_editing_a_dependency_drops_the_dependants_cache(tmp_path):
+    """numba's cache misses edits in other modules; reference_impl._jitcache fixes that."""
+    pkg = tmp_path / "site" / "reference_impl"
+    shutil.copytree(ROOT / "reference_impl", pkg, ignore=shutil.ignore_patterns("__pycache__"))
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path / "cache"), PYTHONPATH=str(pkg.parent))
+    probe = ("from reference_impl._jitcache import purge_stale_cache, _probe; "
+             "from numba.core.caching import UserProvidedCacheLocator as L; "
+             "print(L.from_function(_probe, __import__('reference_impl._jitcache').__file__).get_cache_path()); "
+             "print(sorted(purge_stale_cache()))")
+
+    def run():
+        out = subprocess.run([sys.executable, "-c", probe], env=env, cwd=tmp_path, capture_output=True,
+                             text=True, timeout=300)
+        assert out.returncode == 0, out.stderr
+        cache_dir, dropped = out.stdout.strip().splitlines()[-2:]
+        return Path(cache_dir), dropped
+
+    cache_dir, _ = run()
+    cache_dir.mkdir(parents=True, exist_ok=True)
+    for name in ("_mesh.build-1.py311.nbi", "verify.x-1.py311.nbi", "predicates.orient2d_nb-1.py311.nbi"):
+        (cache_dir / name).write_text("")
+    run()                                                      # first sight: stamps written
+    assert (cache_dir / "_mesh.deps.sha1").exists()
+    assert (cache_dir / "_mesh.build-1.py311.nbi").exists()
+    with open(pkg / "expansion.py", "a") as f:
+        f.write("\n# an edit\n")
+    run()                                  # importing the package purges (before the probe's own call)
+    assert not (cache_dir / "_mesh.build-1.py311.nbi").exists()         # _mesh uses expansion.py
+    assert not (cache_dir / "predicates.orient2d_nb-1.py311.nbi").exists()
+    assert (cache_dir / "verify.x-1.py311.nbi").exists()       # verify does not import expansion
