@@ -86,8 +86,9 @@ def _verdict_for(outcome: RunOutcome) -> tuple[Verdict, str]:
 class Judge:
     """Judges submissions for one problem; reusable (keeps the parsed tests)."""
 
-    def __init__(self, problem: Problem | str, hide: Sequence[str | os.PathLike] = ()):
+    def __init__(self, problem: Problem | str, hide: Sequence[str | os.PathLike] = (), stop_at_first_failure: bool = False):
         self.problem = load_problem(problem) if isinstance(problem, str) else problem
+        self.stop_at_first_failure = stop_at_first_failure
         self.hide = list(hide)
         self.tests = self.problem.tests()
         self.limits = Limits(cpu_s=self.problem.time_limit, wall_s=2 * self.problem.time_limit + 1,
@@ -153,7 +154,7 @@ class Judge:
                         continue
                     if load_failure is not None:
                         r = TestResult(test.name, test.group, load_failure[0], 0.0, 0.0, load_failure[1])
-                    elif test.group in failed_groups:
+                    elif test.group in failed_groups or (failed_groups and self.stop_at_first_failure):
                         r = TestResult(test.name, test.group, Verdict.SKIPPED, message="an earlier test of this group failed")
                     else:
                         r = self._run_one(box, worker, sub, k)

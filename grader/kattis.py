@@ -1,7 +1,7 @@
 """Export a problem as a Kattis problem package (format 2023-07-draft) for problemtools/DOMjudge.
 
 The package gets ``problem.yaml``, the statement, the input validators, the output validator
-(with ``reference_impl/verify.py`` copied next to it, so it runs without this checkout),
+(with ``reference_impl/verify.py`` embedded, so it runs without this checkout),
 ``data/sample`` and every hidden group materialised under ``data/secret``, the generator, and the
 reference solutions from ``solutions/<problem>/expected.yaml`` under ``submissions/``. The
 directory is named after the problem id without dashes (Kattis short names are ``[a-z0-9]+``).
@@ -56,16 +56,21 @@ def export(problem: Problem | str, outdir: str | Path, groups: list[str] | None 
             shutil.copytree(p.path / d, dest / d, ignore=shutil.ignore_patterns("__pycache__"))
     ov = dest / "output_validator"
     ov.mkdir()
-    shutil.copy(p.checker_path, ov / p.checker_path.name)
-    shutil.copy(REPO / "reference_impl" / "verify.py", ov / "verify.py")
+    checker = p.checker_path.read_text()
+    verify = (REPO / "reference_impl" / "verify.py").read_text()
+    if "EMBEDDED_VERIFY_SOURCE" in checker:  # a self-contained single-file validator
+        head, sep, body = checker.partition("\nfrom __future__ import annotations\n")
+        checker = f"{head}{sep}\nEMBEDDED_VERIFY_SOURCE = {verify!r}\n{body}"
+    (ov / p.checker_path.name).write_text(checker)
     (dest / "data" / "sample").mkdir(parents=True)
     (dest / "data" / "secret").mkdir(parents=True)
+    order = {g.name: i for i, g in enumerate(p.groups)}
     for t in p.tests():
         group, stem = t.name.split("/", 1)
         if t.group == "sample" or group == "sample":
             base = dest / "data" / "sample" / stem
-        elif groups is None or t.group in groups:
-            base = dest / "data" / "secret" / f"{group}-{stem}"
+        elif groups is None or t.group in groups:  # judges sort by name: keep the groups' order
+            base = dest / "data" / "secret" / f"{order[t.group]:02d}-{group}-{stem}"
         else:
             continue
         base.with_suffix(".in").write_text(t.input_text)

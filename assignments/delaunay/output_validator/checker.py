@@ -8,9 +8,9 @@ Two uses, one logic:
   ``python3 checker.py input answer feedback_dir < team_output`` (exit 42 accept, 43 reject,
   the reason in ``feedback_dir/judgemessage.txt``).
 
-The exact test itself is ``reference_impl.verify.check_delaunay`` (Python integers), loaded from
-the file next to this one when exported, else from the checkout, without importing the rest of
-``reference_impl`` (which would pull in numba).
+The exact test itself is ``reference_impl.verify.check_delaunay`` (Python integers): embedded in
+this file by ``export-kattis``, else loaded by path from the checkout, without importing the rest
+of ``reference_impl`` (which would pull in numba).
 
 Example:
     >>> check([[[0, 0], [1, 0], [0, 1]]], [[0, 1, 2]], None)
@@ -29,6 +29,11 @@ class PresentationError(Exception):
 
 
 def _load_verify():
+    embedded = globals().get("EMBEDDED_VERIFY_SOURCE")  # set by `python -m grader export-kattis`
+    if embedded:
+        module = type(sys)("_delaunay_verify")
+        exec(compile(embedded, "verify.py", "exec"), module.__dict__)
+        return module
     here = Path(__file__).resolve().parent
     candidates = [here / "verify.py"] + [p / "reference_impl" / "verify.py" for p in here.parents]
     for path in candidates:
