@@ -1,4 +1,4 @@
-"""Constrained Delaunay triangulation (CDT) and triangulation of polygons with holes.
+"""Constrained Delaunay triangulation (CDT): points plus segments that must be edges.
 
 A *constrained* Delaunay triangulation of points and segments contains every
 segment as a chain of edges, and among such triangulations it is the most
@@ -14,11 +14,9 @@ How (Sloan's flip method, 1993, on top of the fast Delaunay kernel):
    strictly convex, re-queueing it while the new diagonal still crosses a-b;
    re-queue the others (some edge is always flippable).  When a-b is an edge,
    Lawson-flip the touched triangles until every non-constraint edge is
-   locally Delaunay again.  (The simpler cavity method, which re-triangulates
-   the two "pseudo-polygons" beside the segment, assumes every crossed
-   triangle's vertices lie on the cavity boundary; a segment can cross all the
-   triangles around a vertex, so the cavity can enclose a vertex and that
-   assumption fails.  Flips have no such case.)
+   locally Delaunay again.  (Flips rather than re-triangulating the two
+   "pseudo-polygons" beside the segment: a segment can cross *every* triangle
+   around a vertex, and then the cavity encloses that vertex.)
 3. A segment passing exactly through a vertex is split there (a -> v, v -> b),
    so collinear overlapping segments and T-junctions need nothing special.  A
    segment that *properly* crosses an earlier one raises ``ValueError`` naming
@@ -28,41 +26,29 @@ Every decision (which side, in-circle, along-edge) uses the exact predicates.
 Segments are inserted in a canonical (coordinate) order, so the triangles do
 not depend on the order the segments are given in.
 
-``polygon_triangulation(boundary, holes)`` runs the CDT on the polygon's vertices
-with its edges as constraints, checks exactly that boundary and holes are simple
-and disjoint with every hole inside the boundary (a proper crossing is caught by
-the insertion; a vertex on another edge by the split record; a repeated vertex by
-the duplicate map; a misplaced hole by the flood fill), and keeps the triangles
-reached by a flood fill from the inside of the boundary that never crosses a
-constraint edge.
+``navmesh.polygon_triangulation`` (polygons with holes) is built on this module.
 
 Run the doctests:  python -m doctest reference_impl/constrained.py
 
 >>> cdt = ConstrainedDelaunay([(0, 0), (4, 0), (4, 4), (0, 4), (1, 2), (3, 2)], [(0, 2)])
 >>> [0, 2] in cdt.constraint_edges().tolist()
 True
->>> pt = polygon_triangulation([(0, 0), (3, 0), (3, 3), (0, 3)], [[(1, 1), (2, 1), (2, 2), (1, 2)]])
->>> len(pt.simplices)
-8
 """
 from __future__ import annotations
 
-from typing import NamedTuple, Sequence
+from typing import NamedTuple
 
 import numpy as np
 from numba import njit
-from scipy.sparse import coo_matrix
-from scipy.sparse.csgraph import connected_components
+from numpy.typing import ArrayLike
 
 from .delaunay import Delaunay
 from .points import as_points
-from .predicates import incircle_nb, orient2d, orient2d_nb, workspace
+from .predicates import incircle_nb, orient2d_nb, workspace
 
-__all__ = ["ConstrainedDelaunay", "constrained_delaunay", "PolygonTriangulation",
-           "polygon_triangulation", "fan_search"]
+__all__ = ["ConstrainedDelaunay", "constrained_delaunay"]
 
-# error codes of the numba kernel
-_OK, _CROSSING, _LOST = 0, 1, 2
+_CROSSING, _LOST = 1, 2           # error codes of the numba kernel
 
 
 # ----------------------------------------------------------------------------- numba kernel
@@ -94,7 +80,7 @@ def _ahead(ax, ay, qx, qy, x, y):
 
 
 @njit(cache=True)
-def fan_search(tri, nbr, vt, X, Y, a, qx, qy, w):
+def fan_search(tri, nbr, vt, X, Y, a, qx, qy, qv, w):
     """Where does the ray from vertex ``a`` towards point q leave ``a``?
 
     Walks the triangles around ``a`` (starting at ``vt[a]``, counter-clockwise,
@@ -102,6 +88,8 @@ def fan_search(tri, nbr, vt, X, Y, a, qx, qy, w):
     ``(t, x)``: the ray runs along edge (a, x) of triangle t when ``x >= 0``;
     it enters the interior of t when ``x == -1``; ``t == -1`` when no triangle
     around ``a`` contains the direction (a on the boundary, q pointing out).
+    ``qv`` is the vertex at q (-1 if none): recognised by its index, which
+    spares the exact stage of the predicate a zero orientation needs.
     """
     t0 = vt[a]
     if t0 < 0:
@@ -114,6 +102,10 @@ def fan_search(tri, nbr, vt, X, Y, a, qx, qy, w):
         k = _slot(tri, t, a)
         x = tri[t, (k + 1) % 3]
         y = tri[t, (k + 2) % 3]
+        if x == qv:
+            return t, x
+        if y == qv:
+            return t, y
         ox = orient2d_nb(ax, ay, qx, qy, X[x], Y[x], w)
         oy = orient2d_nb(ax, ay, qx, qy, X[y], Y[y], w)
         if ox == 0 and _ahead(ax, ay, qx, qy, X[x], Y[x]):
@@ -140,7 +132,10 @@ def fan_search(tri, nbr, vt, X, Y, a, qx, qy, w):
 
 @njit(cache=True)
 def _find_edge(tri, nbr, vt, u, v):
-    """A triangle t containing edge (u, v) and the slot of its third vertex; (-1, -1) if absent."""
+    """A triangle t containing edge (u, v) and the slot of its third vertex; (-1, -1) if absent.
+
+    Same walk around u as ``fan_search``, but by vertex index only (no predicate).
+    """
     t0 = vt[u]
     t = t0
     ccw = True
@@ -150,17 +145,13 @@ def _find_edge(tri, nbr, vt, u, v):
             return t, (k + 2) % 3
         if tri[t, (k + 2) % 3] == v:
             return t, (k + 1) % 3
-        if ccw:
-            nx = nbr[t, (k + 1) % 3]
-            if nx == t0:
-                return -1, -1
-            if nx >= 0:
-                t = nx
-                continue
+        nx = nbr[t, (k + 1) % 3] if ccw else nbr[t, (k + 2) % 3]
+        if nx == t0:
+            return -1, -1
+        if nx < 0 and ccw:
             ccw = False
             t = t0
-            k = _slot(tri, t, u)
-        nx = nbr[t, (k + 2) % 3]
+            nx = nbr[t, (_slot(tri, t, u) + 2) % 3]
         if nx < 0:
             return -1, -1
         t = nx
@@ -235,7 +226,7 @@ def _insert_segment(s, a, b, tri, nbr, cid, vt, X, Y, w, through, err, queue, to
     while a != b:
         bx = X[b]
         by = Y[b]
-        t, x = fan_search(tri, nbr, vt, X, Y, a, bx, by, w)
+        t, x = fan_search(tri, nbr, vt, X, Y, a, bx, by, b, w)
         if t < 0:
             err[0] = _LOST
             return False
@@ -340,6 +331,15 @@ def _insert_segment(s, a, b, tri, nbr, cid, vt, X, Y, w, through, err, queue, to
         _legalize(tri, nbr, cid, vt, X, Y, w, stack, top)
         a = e
     return True
+
+
+@njit(cache=True)
+def orient_many(X, Y, a, b, c, w):
+    """Exact orientation signs of the vertex triples (a[i], b[i], c[i])."""
+    out = np.empty(a.shape[0], np.int64)
+    for i in range(a.shape[0]):
+        out[i] = orient2d_nb(X[a[i]], Y[a[i]], X[b[i]], Y[b[i]], X[c[i]], Y[c[i]], w)
+    return out
 
 
 @njit(cache=True)
@@ -457,7 +457,7 @@ class ConstrainedDelaunay:
     ValueError: segments[1] = (0, 2)-(2, 0) properly crosses segments[0] = (0, 0)-(2, 2)
     """
 
-    def __init__(self, points, segments=()) -> None:
+    def __init__(self, points: ArrayLike, segments: ArrayLike = ()) -> None:
         self._delaunay = Delaunay(points)
         self._segments = _as_segments(segments, len(self._delaunay.points))
         k = _run_cdt(self._delaunay, self._segments)
@@ -529,7 +529,7 @@ def _unique_edges(tri: np.ndarray, mask: np.ndarray) -> np.ndarray:
     return np.unique(np.sort(e, axis=1), axis=0)
 
 
-def constrained_delaunay(points, segments) -> np.ndarray:
+def constrained_delaunay(points: ArrayLike, segments: ArrayLike) -> np.ndarray:
     """Triangles (m, 3), counter-clockwise, of the constrained Delaunay triangulation.
 
     Shorthand for ``ConstrainedDelaunay(points, segments).simplices`` (no point is
@@ -539,138 +539,3 @@ def constrained_delaunay(points, segments) -> np.ndarray:
     [[0, 1, 2]]
     """
     return ConstrainedDelaunay(points, segments).simplices
-
-
-# ----------------------------------------------------------------------------- polygons
-class PolygonTriangulation(NamedTuple):
-    """Triangles of a polygon with holes.
-
-    ``points``: the vertices, boundary first then each hole (input order, closing
-    duplicates removed); ``simplices`` (m, 3) counter-clockwise; ``neighbors``
-    (m, 3), -1 across the boundary and hole edges; ``rings``: vertex indices of
-    the boundary (counter-clockwise) then of each hole (clockwise), so the free
-    space is always on the left of a ring edge.
-    """
-    points: np.ndarray
-    simplices: np.ndarray
-    neighbors: np.ndarray
-    rings: tuple
-
-
-def _clean_ring(ring, name: str) -> np.ndarray:
-    """Validated (k, 2) ring without repeated consecutive vertices or a closing copy of the first."""
-    pts = as_points(ring, name=name)
-    if len(pts):
-        keep = np.any(pts != np.roll(pts, 1, axis=0), axis=1)
-        keep[0] = True
-        pts = pts[keep]
-        if len(pts) > 1 and np.array_equal(pts[0], pts[-1]):
-            pts = pts[:-1]
-    if len(pts) < 3:
-        raise ValueError(f"{name} needs at least 3 distinct vertices, got {len(pts)}")
-    return pts
-
-
-def _winding(p, ring_pts: np.ndarray) -> int:
-    """Exact winding number of ring_pts around p (p not on the ring)."""
-    wn = 0
-    for a, b in zip(ring_pts, np.roll(ring_pts, -1, axis=0)):
-        if a[1] <= p[1] < b[1] and orient2d(a, b, p) > 0:
-            wn += 1
-        elif b[1] <= p[1] < a[1] and orient2d(a, b, p) < 0:
-            wn -= 1
-    return wn
-
-
-def polygon_triangulation(boundary, holes: Sequence = ()) -> PolygonTriangulation:
-    """Constrained Delaunay triangulation of a polygon with holes (triangles inside only).
-
-    ``boundary``: (k, 2) vertices of a simple polygon, either orientation (a
-    closing copy of the first vertex is allowed).  ``holes``: simple polygons
-    strictly inside the boundary, pairwise disjoint, not touching the boundary
-    or each other.  Violations raise ``ValueError`` naming the offending edges,
-    vertices or holes.  Returns a ``PolygonTriangulation``.
-
-    >>> pt = polygon_triangulation([(0, 0), (2, 0), (2, 2), (1, 1), (0, 2)])
-    >>> len(pt.simplices), pt.rings[0].tolist()
-    (3, [0, 1, 2, 3, 4])
-    >>> polygon_triangulation([(0, 0), (2, 0), (0, 2), (2, 2)])
-    Traceback (most recent call last):
-    ...
-    ValueError: polygon is not simple: boundary edge 3 (2, 2)-(0, 0) crosses boundary edge 1 (2, 0)-(0, 2)
-    """
-    if holes is None:
-        holes = ()
-    if isinstance(holes, (str, bytes)):
-        raise ValueError("holes must be a sequence of polygons")
-    names = ["boundary"] + [f"hole {h}" for h in range(len(holes))]
-    rings = [_clean_ring(boundary, "boundary")] + [_clean_ring(h, f"holes[{i}]") for i, h in enumerate(holes)]
-    sizes = np.array([len(r) for r in rings])
-    offset = np.concatenate([[0], np.cumsum(sizes)])
-    pts = np.vstack(rings)
-    ring_of = np.repeat(np.arange(len(rings)), sizes)
-    local = np.arange(len(pts)) - offset[ring_of]
-    nxt = np.arange(len(pts)) + 1
-    nxt[offset[1:] - 1] = offset[:-1]
-    seg = np.stack([np.arange(len(pts)), nxt], axis=1)
-
-    def vname(i):
-        return f"{names[ring_of[i]]} vertex {local[i]} {_fmt(pts[i])}"
-
-    def ename(s):
-        return f"{names[ring_of[s]]} edge {local[s]} {_fmt(pts[s])}-{_fmt(pts[nxt[s]])}"
-
-    d = Delaunay(pts)
-    rep = d.index_map
-    dup = np.flatnonzero(rep != np.arange(len(pts)))
-    if len(dup):
-        raise ValueError(f"polygon is not simple: {vname(dup[0])} repeats {vname(rep[dup[0]])}")
-    if len(d.simplices) == 0:
-        raise ValueError("polygon has zero area: all vertices are collinear")
-    k = _run_cdt(d, seg)
-    if k.error is not None:
-        s, o = sorted(k.error[:2])
-        raise ValueError(f"polygon is not simple: {ename(o)} crosses {ename(s)}")
-    hit = np.flatnonzero(k.through >= 0)
-    if len(hit):
-        s = hit[0]
-        raise ValueError(f"polygon is not simple: {vname(k.through[s])} lies on {ename(s)}")
-    # orientation from the lexicographically smallest vertex (a convex corner): boundary CCW, holes CW
-    ring_idx = []
-    for r in range(len(rings)):
-        idx = np.arange(offset[r], offset[r + 1])
-        m = int(np.lexsort((rings[r][:, 1], rings[r][:, 0]))[0])
-        ccw = orient2d(rings[r][m - 1], rings[r][m], rings[r][(m + 1) % len(idx)]) > 0
-        ring_idx.append(idx if ccw == (r == 0) else idx[::-1].copy())
-    # flood fill from the inside of the boundary, never crossing a constraint edge
-    tri, nbr, cid = k.tri, k.nbr, k.cid
-    m, n = len(tri), len(pts)
-    key = (tri[:, [1, 2, 0]] * n + tri[:, [2, 0, 1]]).ravel()      # directed edge opposite slot k
-    order = np.argsort(key)
-
-    def left_triangle(u, v):
-        """Triangle containing the directed edge u -> v (it exists for every ring edge)."""
-        pos = np.searchsorted(key[order], u * n + v)
-        ok = (pos < len(key)) & (key[order][np.minimum(pos, len(key) - 1)] == u * n + v)
-        return np.where(ok, order[np.minimum(pos, len(key) - 1)] // 3, -1)
-
-    t_idx, k_idx = np.nonzero((nbr >= 0) & (cid < 0))
-    graph = coo_matrix((np.ones(len(t_idx)), (t_idx, nbr[t_idx, k_idx])), shape=(m, m))
-    _, label = connected_components(graph, directed=False)
-    b = ring_idx[0]
-    seeds = left_triangle(b, np.roll(b, -1))
-    free = np.isin(label, label[seeds])
-    for h in range(1, len(rings)):
-        hr = ring_idx[h]
-        side = left_triangle(hr, np.roll(hr, -1))
-        if (side < 0).any() or not free[side].all():
-            p = rings[h][0]
-            if _winding(p, rings[0]) == 0:
-                raise ValueError(f"{names[h]} lies outside the boundary")
-            inside = [g for g in range(1, len(rings)) if g != h and _winding(p, rings[g]) != 0]
-            where = f"inside hole {inside[0] - 1}" if inside else "around another hole"
-            raise ValueError(f"{names[h]} lies {where}; holes must be disjoint")
-    new = np.full(m + 1, -1, dtype=np.int64)
-    new[np.flatnonzero(free)] = np.arange(int(free.sum()))
-    nb = np.where(cid[free] >= 0, -1, new[nbr[free]])
-    return PolygonTriangulation(pts, tri[free].copy(), nb, tuple(ring_idx))

@@ -1,4 +1,4 @@
-"""Tests for reference_impl.constrained: constrained Delaunay triangulation and polygon triangulation.
+"""Tests for reference_impl.constrained: the constrained Delaunay triangulation.
 
 Run:  .venv/bin/python -m pytest tests/geometry/test_constrained.py -q
 
@@ -6,8 +6,8 @@ Oracles: Shewchuk's Triangle (the ``triangle`` package, 'p' switch) on inputs in
 general position, where the CDT is unique; an exact checker written here with
 Python integers (``verify.exact_coordinates``): positive orientation, the
 triangles tile the convex hull, every segment is a chain of edges, every other
-interior edge is locally Delaunay (which implies constrained Delaunay); exact
-areas for polygons with integer coordinates; hand-made degenerate sets.
+interior edge is locally Delaunay (which implies constrained Delaunay);
+hand-made degenerate sets.  Polygons with holes are tested in test_navmesh.py.
 """
 from __future__ import annotations
 
@@ -18,8 +18,7 @@ import pytest
 import triangle
 from hypothesis import given, settings, strategies as st
 
-from reference_impl.constrained import (ConstrainedDelaunay, constrained_delaunay,
-                                        polygon_triangulation)
+from reference_impl.constrained import ConstrainedDelaunay, constrained_delaunay
 from reference_impl.verify import (convex_hull_exact, exact_coordinates, incircle_exact,
                                    orient_exact)
 
@@ -249,137 +248,3 @@ def test_scale_invariance(scale):
     scaled = ConstrainedDelaunay(pts * scale, segs)
     assert triangle_set(scaled.simplices) == base
     assert_valid_cdt(pts * scale, segs, scaled)
-
-
-# ----------------------------------------------------------------------------- polygons
-def star_polygon(rng, k, scale=1.0):
-    """Random simple polygon, star-shaped around the origin, radii in [0.7, 1] * scale."""
-    ang = (np.arange(k) + rng.uniform(-0.4, 0.4, k)) * 2 * np.pi / k
-    r = rng.uniform(0.7, 1.0, k)
-    return np.stack([r * np.cos(ang), r * np.sin(ang)], axis=1) * scale
-
-
-def convex_holes(rng, count, scale=1.0):
-    """Up to 9 disjoint convex holes around the points (0.3 i, 0.3 j), i, j in -1..1; returns holes, centres."""
-    cells = rng.permutation(9)[:count]
-    holes, centres = [], []
-    for c in cells:
-        cx, cy = 0.3 * (c % 3 - 1), 0.3 * (c // 3 - 1)
-        m = int(rng.integers(3, 7))
-        ang = np.sort(rng.uniform(0, 2 * np.pi, m))
-        if np.max(np.diff(np.concatenate([ang, [ang[0] + 2 * np.pi]]))) > 0.9 * np.pi:
-            ang = np.arange(m) * 2 * np.pi / m + ang[0]    # keep the centre inside the hole
-        r = rng.uniform(0.05, 0.1, m)
-        holes.append(np.stack([cx + r * np.cos(ang), cy + r * np.sin(ang)], axis=1) * scale)
-        centres.append((cx * scale, cy * scale))
-    return holes, centres
-
-
-def float_area(pt) -> float:
-    a, b, c = (pt.points[pt.simplices[:, k]] for k in range(3))
-    return float(np.sum((b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (c[:, 0] - a[:, 0]))) / 2
-
-
-def area2_int(P, ring) -> int:
-    return sum(P[a][0] * P[b][1] - P[b][0] * P[a][1] for a, b in zip(ring, list(ring[1:]) + [ring[0]]))
-
-
-@settings(max_examples=30, deadline=None)
-@given(seed=st.integers(0, 2**32 - 1), k=st.integers(12, 60), h=st.integers(0, 6))
-def test_polygon_with_holes_matches_triangle(seed, k, h):
-    rng = np.random.default_rng(seed)
-    boundary = star_polygon(rng, k)
-    holes, centres = convex_holes(rng, h)
-    pt = polygon_triangulation(boundary, holes)
-    rings = [boundary] + holes
-    sizes = np.cumsum([0] + [len(r) for r in rings])
-    segs = np.concatenate([np.stack([np.arange(a, b), np.roll(np.arange(a, b), -1)], 1)
-                           for a, b in zip(sizes[:-1], sizes[1:])])
-    data = {"vertices": np.vstack(rings), "segments": segs}
-    if centres:
-        data["holes"] = np.array(centres)
-    ref = triangle.triangulate(data, "p")
-    assert len(ref["vertices"]) == len(pt.points)
-    assert triangle_set(pt.simplices) == triangle_set(ref["triangles"])
-    # every boundary/hole edge is an edge with exactly one free triangle beside it
-    P = exact_coordinates(pt.points)
-    directed = {(t[k], t[(k + 1) % 3]) for t in pt.simplices.tolist() for k in range(3)}
-    for r, ring in enumerate(pt.rings):
-        for u, v in zip(ring, np.roll(ring, -1)):
-            assert (u, v) in directed and (v, u) not in directed
-        assert (area2_int(P, ring.tolist()) > 0) == (r == 0)
-
-
-@settings(max_examples=25, deadline=None)
-@given(seed=st.integers(0, 2**32 - 1), k=st.integers(12, 40), h=st.integers(0, 5),
-       flip=st.booleans())
-def test_integer_polygon_area_is_exact(seed, k, h, flip):
-    rng = np.random.default_rng(seed)
-    boundary = np.round(star_polygon(rng, k, 1000))
-    holes = [np.round(x) for x in convex_holes(rng, h, 1000)[0]]
-    if flip:                                   # any orientation is accepted
-        boundary = boundary[::-1]
-        holes = [x[::-1] for x in holes]
-    pt = polygon_triangulation(boundary, holes)
-    P = [tuple(int(c) for c in p) for p in pt.points]
-    tri_area = sum(area2_int(P, list(t)) for t in pt.simplices.tolist())
-    expect = abs(area2_int(P, list(range(len(boundary))))) - sum(
-        abs(area2_int(P, r.tolist())) for r in pt.rings[1:])
-    assert tri_area == expect
-    assert all(area2_int(P, list(t)) > 0 for t in pt.simplices.tolist())
-
-
-def test_rectangle_with_collinear_vertices_and_square_hole():
-    boundary = [(0, 0), (1, 0), (2, 0), (3, 0), (3, 1), (3, 2), (3, 3), (2, 3), (1, 3), (0, 3), (0, 2), (0, 1)]
-    hole = [(1, 1), (1.5, 1), (2, 1), (2, 2), (1, 2)]            # collinear vertex on a hole edge
-    pt = polygon_triangulation(boundary, [hole])
-    P = exact_coordinates(pt.points)
-    assert sum(orient_exact(*(P[v] for v in t)) for t in pt.simplices.tolist()) == len(pt.simplices)
-    area = float_area(pt)
-    assert area == 8.0
-    # 17 vertices, no interior points: triangles = n + 2 * holes - 2
-    assert len(pt.simplices) == len(pt.points) + 2 * 1 - 2
-
-
-def test_grid_room_with_axis_aligned_walls():
-    """A 4x4 room with two 1x1 pillars; boundary closed with a repeated first vertex."""
-    boundary = [(0, 0), (4, 0), (4, 4), (0, 4), (0, 0)]
-    holes = [[(1, 1), (2, 1), (2, 2), (1, 2)], [(3, 2), (3, 3), (2, 3), (2, 2.5)]]
-    pt = polygon_triangulation(boundary, holes)
-    assert len(pt.points) == 12 and pt.rings[0].tolist() == [0, 1, 2, 3]
-    area = float_area(pt)
-    assert area == 16 - 1 - 0.75
-    # neighbours: -1 exactly across the 4 + 4 + 4 ring edges
-    assert int((pt.neighbors < 0).sum()) == 12
-
-
-def test_orientation_is_normalised():
-    pt1 = polygon_triangulation([(0, 0), (4, 0), (4, 4), (0, 4)], [[(1, 1), (2, 1), (2, 2)]])
-    pt2 = polygon_triangulation([(0, 4), (4, 4), (4, 0), (0, 0)], [[(2, 2), (2, 1), (1, 1)]])
-    assert pt1.rings[0].tolist() == [0, 1, 2, 3] and pt1.rings[1].tolist() == [6, 5, 4]
-    assert pt2.rings[0].tolist() == [3, 2, 1, 0] and pt2.rings[1].tolist() == [4, 5, 6]
-    key = lambda pt: {frozenset(map(tuple, pt.points[t].tolist())) for t in pt.simplices}  # noqa: E731
-    assert key(pt1) == key(pt2)
-
-
-SQUARE = [(0, 0), (10, 0), (10, 10), (0, 10)]
-
-
-@pytest.mark.parametrize("boundary, holes, message", [
-    ([(0, 0), (2, 0), (0, 2), (2, 2)], [], "boundary edge 3 .* crosses boundary edge 1"),
-    (SQUARE, [[(20, 20), (21, 20), (21, 21)]], "hole 0 lies outside the boundary"),
-    (SQUARE, [[(1, 1), (9, 1), (9, 9), (1, 9)], [(4, 4), (5, 4), (5, 5)]], "hole 1 lies inside hole 0"),
-    (SQUARE, [[(4, 4), (5, 4), (5, 5)], [(1, 1), (9, 1), (9, 9), (1, 9)]], "hole 0 lies inside hole 1"),
-    (SQUARE, [[(1, 1), (5, 1), (5, 5)], [(4, 2), (8, 2), (8, 8)]], "hole 1 edge .* crosses hole 0 edge"),
-    (SQUARE, [[(5, 0), (6, 1), (4, 1)]], "hole 0 vertex 0 .* repeats|lies on"),
-    (SQUARE, [[(5, 0.0), (6, 1), (4, 1)]], "lies on boundary edge 0"),
-    (SQUARE, [[(10, 10), (9, 9), (9, 8)]], "repeats boundary vertex 2"),
-    ([(0, 0), (4, 0), (2, 0), (2, 2)], [], "lies on"),                  # spike folding back
-    ([(0, 0), (1, 1), (2, 2)], [], "zero area"),
-    ([(0, 0), (1, 1), (0, 0)], [], "at least 3"),
-    (SQUARE, [[(1, 1), (2, math.nan), (2, 2)]], r"holes\[0\]"),
-    ([(0, 0), (4, 0), (4, 4), (2, 2), (0, 4), (2, 2)], [], "repeats"),   # touches itself at a vertex
-])
-def test_invalid_polygons_raise(boundary, holes, message):
-    with pytest.raises(ValueError, match=message):
-        polygon_triangulation(boundary, holes)
