@@ -103,7 +103,8 @@ def grade_remote(problem: str, student: str, filename: str, data: bytes, prior: 
 class Progress:
     """A progress bar on stderr (plain lines when stderr is not a terminal)."""
 
-    def __init__(self, total: int, stream=sys.stderr):
+    def __init__(self, total: int, stream=None):
+        stream = stream if stream is not None else sys.stderr
         self.total, self.done, self.stream, self.t0 = total, 0, stream, time.monotonic()
         self.tty = hasattr(stream, "isatty") and stream.isatty()
 

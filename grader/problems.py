@@ -56,6 +56,8 @@ class Group:
 class TestCase:
     """One test: its input text and the reference answer text (parent side only)."""
 
+    __test__ = False  # not a pytest test class
+
     name: str
     group: str
     input_text: str

@@ -45,6 +45,8 @@ DESCRIPTIONS = {
 class TestResult:
     """One test's outcome. ``input_preview`` is the failing input for small tests (for students)."""
 
+    __test__ = False  # not a pytest test class
+
     name: str
     group: str
     verdict: Verdict

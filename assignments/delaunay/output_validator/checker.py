@@ -45,7 +45,16 @@ def _load_verify():
     raise ImportError("reference_impl/verify.py not found next to the checker or in a parent directory")
 
 
-check_delaunay = _load_verify().check_delaunay
+_verify = None
+
+
+def check_delaunay(points, triangles):
+    """``reference_impl.verify.check_delaunay``, loaded on first use (malformed output is
+    rejected without paying for numpy's import)."""
+    global _verify
+    if _verify is None:
+        _verify = _load_verify()
+    return _verify.check_delaunay(points, triangles)
 
 
 def read_input(text: str) -> list:
@@ -129,11 +138,13 @@ def read_answer(text: str) -> list[list[int]]:
 
 def main(argv: list[str]) -> int:
     input_path, answer_path, feedback_dir = argv[1], argv[2], argv[3]
-    args = read_input(Path(input_path).read_text())
-    expected = read_answer(Path(answer_path).read_text())
     try:
-        triangles = read_output(sys.stdin.read(), args)
-        ok, message = check(args, triangles, expected)
+        team = sys.stdin.buffer.read().decode("utf-8")
+        triangles = read_output(team, None)  # malformed output is rejected before any heavy work
+        args = read_input(Path(input_path).read_text())
+        ok, message = check(args, triangles, read_answer(Path(answer_path).read_text()))
+    except UnicodeDecodeError:
+        ok, message = False, "presentation error: the output is not UTF-8 text"
     except PresentationError as exc:
         ok, message = False, f"presentation error: {exc}"
     Path(feedback_dir, "judgemessage.txt").write_text(message + "\n")
