@@ -239,7 +239,7 @@ def test_bad_points_raise():
         constrained_delaunay([(0, 0), (1, math.nan), (0, 1)], [])
 
 
-@pytest.mark.parametrize("scale", [1e-200, 1e-5, 1e150])
+@pytest.mark.parametrize("scale", [1e-300, 1e-5, 1e300])
 def test_scale_invariance(scale):
     rng = np.random.default_rng(7)
     pts = rng.random((40, 2))

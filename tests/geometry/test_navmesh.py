@@ -26,7 +26,7 @@ from hypothesis import given, settings, strategies as st
 from shapely.geometry import LineString, Point, Polygon
 
 from reference_impl.navmesh import NavMesh, funnel, polygon_triangulation, shortest_path
-from reference_impl.verify import exact_coordinates, orient_exact
+from reference_impl.verify import exact_coordinates, incircle_exact, orient_exact
 
 
 # ----------------------------------------------------------------------------- oracle
@@ -233,7 +233,7 @@ def test_hole_orientation_and_closing_vertex_do_not_matter():
     assert a == b
 
 
-@pytest.mark.parametrize("scale", [1e-150, 1e-3, 1e150])
+@pytest.mark.parametrize("scale", [1e-300, 1e-3, 1e150, 1e300])
 def test_scale_invariance(scale):
     """The same corners at any scale (every decision is exact; only lengths are rounded)."""
     sc = lambda pts: [(x * scale, y * scale) for x, y in pts]  # noqa: E731
@@ -324,6 +324,12 @@ def test_integer_polygon_area_is_exact(seed, k, h, flip):
         abs(area2_int(P, r.tolist())) for r in pt.rings[1:])
     assert tri_area == expect
     assert all(area2_int(P, list(t)) > 0 for t in pt.simplices.tolist())
+    # constrained Delaunay: every edge between two kept triangles is locally Delaunay
+    for t, nb in zip(pt.simplices.tolist(), pt.neighbors.tolist()):
+        for k, o in enumerate(nb):
+            if o >= 0:
+                x = (set(pt.simplices[o].tolist()) - set(t)).pop()
+                assert incircle_exact(*(P[v] for v in t), P[x]) <= 0
 
 
 def test_rectangle_with_collinear_vertices_and_square_hole():
