@@ -23,8 +23,9 @@ How (Sloan's flip method, 1993, on top of the fast Delaunay kernel):
    both (this implementation adds no Steiner points).
 
 Every decision (which side, in-circle, along-edge) uses the exact predicates.
-Segments are inserted in a canonical (coordinate) order, so the triangles do
-not depend on the order the segments are given in.
+Segments are inserted in a canonical (coordinate) order and ``Delaunay``'s
+output depends only on the point set, so the triangles (cocircular ties
+included) do not depend on the order of the segments or of the points.
 
 ``navmesh.polygon_triangulation`` (polygons with holes) is built on this module.
 

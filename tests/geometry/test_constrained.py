@@ -163,10 +163,14 @@ def test_grid_with_segments_through_vertices(seed, side):
     segs = random_segments(rng, pts, 3 * side, allow_touch=True)
     cdt = ConstrainedDelaunay(pts, segs)
     assert_valid_cdt(pts, segs, cdt)
-    # the same triangles whatever the segment order and direction
+    # the same triangles (ties included) whatever the order of the segments, their
+    # direction, and the order of the points
     perm = rng.permutation(len(segs))
     again = ConstrainedDelaunay(pts, segs[perm][:, ::-1])
     assert triangle_set(again.simplices) == triangle_set(cdt.simplices)
+    shuffle = rng.permutation(len(pts))
+    moved = ConstrainedDelaunay(pts[shuffle], np.argsort(shuffle)[segs])
+    assert triangle_set(shuffle[moved.simplices]) == triangle_set(cdt.simplices)
 
 
 def test_segment_through_vertex_is_split():
