@@ -139,7 +139,7 @@ class Step:
     >>> print(steps[-1])
     insert (4, 4): 2 bad triangles, cavity boundary of 4 edges, 4 new triangles
     >>> steps[-1].bad, steps[-1].boundary
-    ([(1, 2, -1), (0, 1, -1)], [(1, 2), (2, -1), (-1, 0), (0, 1)])
+    ([(0, 1, -1), (1, 2, -1)], [(0, 1), (1, 2), (2, -1), (-1, 0)])
     >>> steps[-1].new
     [(1, 2, 3), (3, 2, -1), (0, 3, -1), (0, 1, 3)]
     """

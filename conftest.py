@@ -1,0 +1,14 @@
+"""Repository-wide pytest settings: which files are not test or doctest modules.
+
+`make test` runs pytest with --doctest-modules over tests/, reference_impl/ and grader/;
+the files below are data for the tests (hostile student submissions, fixtures) or
+programs that talk on stdin (the sandbox's child bootstrap), never modules to import.
+"""
+collect_ignore_glob = [
+    "tests/grader/hostile/*",
+    "tests/grader/fixtures/*",
+    "grader/child_bootstrap.py",
+    "solutions/*",
+    "assignments/*",
+    "build/*",
+]
