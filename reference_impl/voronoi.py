@@ -31,7 +31,7 @@ bisector of two sites (not an interpolation between two computed vertices,
 which would lose digits when the two are far apart).  All coordinates are first
 scaled by one power of two (exact), so 1e-300 and 1e300 inputs behave like 1.
 Circumcentres of triangles too flat for their float determinant to be trusted
-are placed at distance 2**60 (far outside any box) in the right direction.
+are computed exactly (rare: nearly collinear hull points).
 Vertices that coincide exactly are merged; fewer than three vertices left means
 an empty cell.
 
@@ -46,6 +46,7 @@ result does not depend on the order of the input.
 from __future__ import annotations
 
 import math
+from fractions import Fraction
 
 import numpy as np
 from numba import njit
@@ -53,9 +54,9 @@ from numba import njit
 from .delaunay import Delaunay
 from .points import as_points
 
-__all__ = ["voronoi", "delaunay_adjacency", "as_bbox", "circumcentres"]
+__all__ = ["voronoi", "as_bbox"]
 
-_FAR = 2.0 ** 60          # where unusable (too flat) circumcentres are put, in scaled units
+_FAR = 2.0 ** 900         # circumcentres farther than this (in scaled units) are pulled back to it
 _GEN_FAR = -5             # edge generators: >= 0 a bisector with that site, -1..-4 a box side
 
 
@@ -124,16 +125,17 @@ def _pow2_exponent(*arrays: np.ndarray) -> int:
 
 
 def circumcentres(simp: np.ndarray, X: np.ndarray, Y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Circumcentres of counter-clockwise triangles, computed from the vertex with the
-    largest angle (opposite the longest edge; ties: the lexicographically smallest).
+    """Circumcentres of counter-clockwise triangles (rows of ``simp`` index X, Y).
 
-    The float error of the formula relative to vertex a grows like |cot(angle at a)|,
-    which the largest angle minimises; and the choice depends only on the triangle,
-    not on how its vertices are listed, so every cell sharing it gets the same
-    doubles.  A triangle whose float determinant is within its rounding error of
-    zero (so flat that the formula cannot be trusted) gets a point at distance
-    2**60 (coordinates are meant to be scaled to at most 1) in the direction of its
-    circumcentre.
+    Each is computed from the vertex with the largest angle (opposite the longest
+    edge; ties: the lexicographically smallest vertex): the float error of the
+    formula relative to vertex a grows like |cot(angle at a)|, which the largest
+    angle minimises, and the choice depends only on the triangle, not on how its
+    vertices are listed, so every cell sharing it gets the same doubles.  The edge
+    vectors are scaled by a power of two first (exact), so tiny triangles do not
+    underflow.  A triangle so flat that the sign of its float determinant is not
+    certain is computed exactly (Fractions), and a centre beyond 2**900 is pulled
+    back to that distance along its direction.
 
     >>> cx, cy = circumcentres(np.array([[0, 1, 2]]), np.array([0.0, 2.0, 0.0]), np.array([0.0, 0.0, 2.0]))
     >>> cx.tolist(), cy.tolist()
@@ -141,9 +143,10 @@ def circumcentres(simp: np.ndarray, X: np.ndarray, Y: np.ndarray) -> tuple[np.nd
     """
     rows = np.arange(len(simp))
     xs, ys = X[simp], Y[simp]
-    # squared length of the edge opposite vertex j (the same doubles whichever way it is walked)
-    opp = np.stack([(xs[:, (j + 1) % 3] - xs[:, (j + 2) % 3]) ** 2 + (ys[:, (j + 1) % 3] - ys[:, (j + 2) % 3]) ** 2
-                    for j in range(3)], axis=1)
+    ex = np.stack([xs[:, (j + 1) % 3] - xs[:, (j + 2) % 3] for j in range(3)], axis=1)   # edge opposite j
+    ey = np.stack([ys[:, (j + 1) % 3] - ys[:, (j + 2) % 3] for j in range(3)], axis=1)
+    e = np.frexp(np.maximum(np.abs(ex).max(axis=1), np.abs(ey).max(axis=1)))[1]
+    opp = np.ldexp(ex, -e[:, None]) ** 2 + np.ldexp(ey, -e[:, None]) ** 2
     first = np.zeros(len(simp), dtype=np.int64)
     for j in (1, 2):
         cur = opp[rows, first]
@@ -152,22 +155,36 @@ def circumcentres(simp: np.ndarray, X: np.ndarray, Y: np.ndarray) -> tuple[np.nd
         first = np.where(better, j, first)
     a, b, c = (simp[rows, (first + j) % 3] for j in range(3))
     ax, ay = X[a], Y[a]
-    bx, by = X[b] - ax, Y[b] - ay
-    cx, cy = X[c] - ax, Y[c] - ay
+    bx, by = np.ldexp(X[b] - ax, -e), np.ldexp(Y[b] - ay, -e)
+    cx, cy = np.ldexp(X[c] - ax, -e), np.ldexp(Y[c] - ay, -e)
     bb = bx * bx + by * by
     cc = cx * cx + cy * cy
-    nx = cy * bb - by * cc
-    ny = bx * cc - cx * bb
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         den = 2.0 * (bx * cy - by * cx)
-        trusted = den > 32.0 * np.finfo(float).eps * (np.abs(bx * cy) + np.abs(by * cx))
-        ox = np.where(trusted, nx / den, 0.0)
-        oy = np.where(trusted, ny / den, 0.0)
-        norm = np.hypot(nx, ny)
-        far = ~trusted | ~np.isfinite(ox) | ~np.isfinite(oy) | (np.hypot(ox, oy) > _FAR)
-        ox = np.where(far, _FAR * nx / np.where(norm > 0, norm, 1.0), ox)
-        oy = np.where(far, _FAR * ny / np.where(norm > 0, norm, 1.0), oy)
-    return ax + ox, ay + oy
+        ok = den > 32.0 * np.finfo(float).eps * (np.abs(bx * cy) + np.abs(by * cx))
+        px = ax + np.ldexp(np.where(ok, (cy * bb - by * cc) / den, 0.0), e)
+        py = ay + np.ldexp(np.where(ok, (bx * cc - cx * bb) / den, 0.0), e)
+        ok &= np.isfinite(px) & np.isfinite(py) & (np.maximum(np.abs(px), np.abs(py)) < _FAR)
+    for t in np.flatnonzero(~ok):
+        px[t], py[t] = _exact_circumcentre(*(float(v) for v in (X[a[t]], Y[a[t]], X[b[t]], Y[b[t]],
+                                                                   X[c[t]], Y[c[t]])))
+    return px, py
+
+
+def _exact_circumcentre(ax: float, ay: float, bx: float, by: float, cx: float, cy: float) -> tuple[float, float]:
+    """The circumcentre in exact rational arithmetic, rounded (pulled back to 2**900 if farther)."""
+    A, B, C = (Fraction(ax), Fraction(ay)), (Fraction(bx), Fraction(by)), (Fraction(cx), Fraction(cy))
+    ux, uy, vx, vy = B[0] - A[0], B[1] - A[1], C[0] - A[0], C[1] - A[1]
+    uu, vv = ux * ux + uy * uy, vx * vx + vy * vy
+    nx, ny = vy * uu - uy * vv, ux * vv - vx * uu
+    den = 2 * (ux * vy - uy * vx)
+    if den > 0:
+        ox, oy = A[0] + nx / den, A[1] + ny / den
+        if max(abs(ox), abs(oy)) < _FAR:
+            return float(ox), float(oy)
+    # collinear (not a triangle) or beyond 2**900: keep the direction of the centre
+    m = max(abs(nx), abs(ny)) or Fraction(1)
+    return float(A[0] + _FAR * nx / m), float(A[1] + _FAR * ny / m)
 
 
 @njit(cache=True, inline="always")

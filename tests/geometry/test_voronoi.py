@@ -28,7 +28,7 @@ from hypothesis import given, strategies as st
 from scipy.spatial import Voronoi
 
 import reference_impl.voronoi as voronoi_module
-from pointsets import degenerate_sets, flat_sets
+from pointsets import degenerate_sets, flat_sets, nearly_collinear_hull
 from reference_impl.verify import exact_coordinates
 from reference_impl.voronoi import voronoi
 
@@ -137,9 +137,10 @@ def check_cells_exact(points, box, cells=None):
         # Hausdorff distance between the vertex sets
         dist = np.hypot(mine[:, None, 0] - theirs[None, :, 0], mine[:, None, 1] - theirs[None, :, 1])
         assert dist.min(axis=1).max() <= tol and dist.min(axis=0).max() <= tol, (i, cell, ex)
-        # counter-clockwise, starting at the lowest vertex (area measured from the first
-        # vertex, in units of the box, so that tiny cells far from the origin keep their digits)
-        assert _float_area((cell - cell[0]) / max(box[2] - box[0], box[3] - box[1])) > 0
+        # counter-clockwise, starting at the lowest vertex (area measured from the first vertex,
+        # in units of the cell's own size, so that tiny cells keep their digits)
+        rel = cell - cell[0]
+        assert _float_area(rel / np.abs(rel).max()) > 0
         low = np.lexsort((cell[:, 0], cell[:, 1]))[0]
         assert low == 0
 
@@ -216,6 +217,19 @@ def test_degenerate_sets(name, pts):
     cells = voronoi(pts, box)
     check_judge(pts, box, cells)
     check_cells_exact(pts, box, cells)
+
+
+@pytest.mark.parametrize("case", range(5))
+def test_points_and_box_of_very_different_scales(case):
+    rng = np.random.default_rng(case)
+    P, box = [(rng.random((20, 2)) * 1e-300, (-1, -1, 1, 1)),
+              (rng.random((30, 2)) * 1e-200 + 0.5, (0, 0, 1, 1)),
+              (nearly_collinear_hull(), (-0.5, -2, 1.5, 3)),
+              (nearly_collinear_hull(10) * 1e-300, (-1, -1, 1, 1)),
+              (rng.random((20, 2)) * 1e300, (0, 0, 1, 1))][case]
+    cells = voronoi(P, box)
+    check_judge(P, box, cells)
+    check_cells_exact(P, box, cells)
 
 
 def test_collinear_cells_are_slabs():
