@@ -324,7 +324,7 @@ class FunctionWorker:
         cpu0 = _cpu_seconds(child.pid)
         wall0 = time.monotonic()
         child.send({"id": rid, "args": args})
-        wall_limit = 2 * time_limit + 1.0
+        wall_limit = 3 * time_limit + 1.0
         deadline = wall0 + wall_limit
         cpu_exceeded = False
         while True:
@@ -402,7 +402,7 @@ def run_stdio(box: Sandbox, source: str, input_text: str, time_limit: float, for
     finally:
         for fd in (fin, fout, ferr):
             os.close(fd)
-    wall_limit = 2 * time_limit + 1.0
+    wall_limit = 3 * time_limit + 1.0
     deadline = time.monotonic() + wall_limit
     reply = None
     cpu_exceeded = False

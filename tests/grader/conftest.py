@@ -18,7 +18,7 @@ FIXTURE_PROBLEM = HERE / "fixtures" / "tiny-delaunay"
 
 @pytest.fixture(scope="session")
 def tiny_judge() -> Judge:
-    """A Judge for a 2-group Delaunay problem with a 1 s limit, 512 MB, 1 MB of output."""
+    """A Judge for a one-group Delaunay problem with a 1 s limit, 256 MB, 1 MB of output."""
     return Judge(Problem.load(FIXTURE_PROBLEM))
 
 
