@@ -89,7 +89,7 @@ _LATTICE = np.array([(x, y, z) for x in range(-11, 12) for y in range(-11, 12) f
                      if x * x + y * y + z * z == 121], dtype=float)   # 30 integer points, one sphere
 KINDS = ["uniform", "small-int", "coplanar-rounded", "unit-sphere", "int-cospherical",
          "int-coplanar", "ulp-off-tie", "offset-1e9", "scaled-1e300", "scaled-2^k-ties",
-         "mixed-magnitudes", "huge-and-subnormal"]
+         "mixed-magnitudes", "huge-and-subnormal", "wide-coplanar"]
 
 
 def make_cases(kind: str, k: int, npts: int, rng: np.random.Generator) -> np.ndarray:
@@ -135,6 +135,13 @@ def make_cases(kind: str, k: int, npts: int, rng: np.random.Generator) -> np.nda
         big = rng.uniform(-1, 1, (k, npts, 3)) * 1.7e308
         tiny = rng.integers(-40, 40, (k, npts, 3)) * 5e-324
         return np.where(rng.random((k, 1, 1)) < 0.5, big, tiny)
+    if kind == "wide-coplanar":        # on one plane z = const, x and y of exponents 0..80:
+        m = rng.integers(-7, 8, (k, npts, 2)) * 2.0 ** rng.integers(0, 80, (k, npts, 2))
+        z = np.repeat(rng.choice([1.0, 0.1, -3.0], (k, 1, 1)), npts, axis=1)
+        p = np.concatenate([m, z], axis=2)    # differences need up to 80 bits: inexact
+        off = rng.random(k) < 0.5             # half of them: last point one ulp off the plane
+        p[off, -1, 2] = np.nextafter(p[off, -1, 2], np.inf)
+        return p
     raise ValueError(kind)
 
 
@@ -149,8 +156,8 @@ def test_oracle_agrees_with_fractions():
 
 @pytest.mark.parametrize("kind", KINDS)
 def test_against_exact_oracle(kind):
-    """11 families x 10k cases + 2k of the slow Python-integer fallback: 112k orient3d and
-    112k insphere calls, every sign exact."""
+    """12 families x 10k cases + 2k of the slow Python-integer fallback: 122k orient3d and
+    122k insphere calls, every sign exact."""
     rng = np.random.default_rng(KINDS.index(kind))
     cases = make_cases(kind, 2_000 if kind == "mixed-magnitudes" else 10_000, 5, rng)
     c = [cases[:, i] for i in range(5)]
@@ -173,6 +180,9 @@ def test_families_really_are_degenerate():
     assert (oracle_orient(cop) == 0).all()
     scaled = make_cases("scaled-2^k-ties", 2000, 5, rng)
     assert (oracle_insphere(scaled) == 0).mean() > 0.5
+    wide = make_cases("wide-coplanar", 2000, 5, rng)
+    assert 0.3 < (oracle_insphere(wide) == 0).mean() < 0.7
+    assert 0.3 < (oracle_orient(wide[:, [0, 1, 2, 4]]) == 0).mean() < 0.7
 
 
 def test_sign_conventions():

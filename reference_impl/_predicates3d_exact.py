@@ -1,0 +1,566 @@
+"""The exact stages of the 3D predicates (``predicates3d.py``), for calls the filter cannot decide.
+
+Not meant to be used directly: ``orient3d_nb`` and ``insphere_nb`` in
+``predicates3d`` call ``orient3d_exact_stage`` / ``insphere_exact_stage`` here when
+their floating-point filter is inconclusive.  The stages, cheapest first:
+
+(a) if all coordinate differences are exact and small multiples of one power
+    of two (grids, integer data: |d| < 2**16 units for orient3d, 2**9 for
+    insphere), the float formula has no rounding at all (every intermediate is
+    an integer below 2**53 units) and decides;
+(-) if the call mixes magnitudes more than 2**250 (orient3d) or 2**140
+    (insphere) apart, so that expansion components could underflow, Python
+    integers decide (a numba ``objmode`` block; rare); otherwise every
+    coordinate is scaled by one power of two (max in [0.5, 1)) and
+(b) the determinant of the *rounded* differences is computed exactly with
+    expansion arithmetic (``expansion.py``) and decides unless it lies within
+    Shewchuk's second bound (``O3D_ERRBOUND_B``, ``ISP_ERRBOUND_B`` times the
+    permanent) of zero;
+(c) else that value plus the first-order effect of the rounding tails, in
+    floating point, decides unless it is within ``*_ERRBOUND_C * permanent +
+    RESULT_ERRBOUND * |stage b|`` of zero.  The bounds are derived as for
+    Shewchuk's stage C: with |tail| <= e |difference|, the terms of order two
+    and more in the tails are below 10.01 e^2 permanent (degree 5), the float
+    evaluation of the first-order part errs by at most about 16 e * 5 e
+    permanent; the constants taken, 128 e^2 (insphere) and 64 e^2 (orient3d),
+    have a margin over both (Shewchuk's own are 71 e^2 and 26 e^2);
+(d) else the exact determinant of the exact differences.
+
+Expansions are compressed (Shewchuk's ``compress``) as they grow, so they stay a
+few components long.  Workspace sizes still allow the uncompressed worst case.
+
+The integer versions (``exact_coordinates_3d``, ``orient3d_exact``,
+``insphere_exact``) live here too: they are the Python fallback, and checkers use
+them through ``predicates3d``.
+
+>>> w = np.empty(WORKSPACE3D_SIZE)
+>>> orient3d_exact_stage(0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 2.0, 3.0, 0.0, w)
+0
+"""
+from __future__ import annotations
+
+import math
+from typing import Iterable, Sequence
+
+import numba
+import numpy as np
+from numba import njit
+
+from .expansion import EPSILON, add, diff, mul, negate, two_diff
+
+O3D_ERRBOUND_B = (3.0 + 28.0 * EPSILON) * EPSILON
+O3D_ERRBOUND_C = 64.0 * EPSILON * EPSILON
+ISP_ERRBOUND_B = (5.0 + 72.0 * EPSILON) * EPSILON
+ISP_ERRBOUND_C = 128.0 * EPSILON * EPSILON
+RESULT_ERRBOUND = 4.0 * EPSILON
+
+_O_EXACT_MIN, _I_EXACT_MIN = 2.0 ** -250, 2.0 ** -140
+_C_PLO = 2.0 ** -900             # stage (c) only where no product can underflow
+
+# workspace layout (offsets); sizes are worst-case expansion lengths with
+# two-component differences: 2x2 minors 16, 3x3 minors 192, lifts 24,
+# lift * minor 9216, sum of four such terms 36864.
+_V = 0             # 15 scaled coordinates
+_LEN = 16          # lengths: 12 differences, (unused), 4 of 3x3 minors at 18, 4 of lifts at 22
+_I = 48            # 12 differences as small integers (stage 0)
+_D = 64            # 12 differences, 2 slots each
+_M2 = 88           # six 2x2 minors, 16 each
+_M3 = 184          # four 3x3 minors, 192 each
+_LIFT = 952        # four lifts, 24 each
+_P1, _P2, _P3 = 1048, 1240, 1432     # 192 each: partial products
+_Q = 1624          # 384: partial sum
+_TERM = 2008       # 9216
+_T1 = 11224        # 9216: mul scratch
+_T2 = 20440        # 9216
+_ACC = 29656       # 36864
+_ACC2 = 66520      # 36864
+_H, _TL = 103384, 103396             # 12 rounded differences and their 12 tails (stage c)
+WORKSPACE3D_SIZE = 103408
+
+
+# --------------------------------------------------------------------- exact integer versions
+def exact_coordinates_3d(points: Iterable[Sequence[float]]) -> list[tuple[int, int, int]]:
+    """The points as integer triples, all scaled by one common power of two.
+
+    Orientation and in-sphere signs are invariant under a common positive scaling,
+    so the integer versions give the exact answers for the doubles.
+
+    >>> exact_coordinates_3d([(0.5, 1.0, 2.0), (0.25, -2.0, 0.0)])
+    [(2, 4, 8), (1, -8, 0)]
+    """
+    ratios = []
+    for p in points:
+        q = [float(v) for v in p]
+        if len(q) != 3 or not all(math.isfinite(v) for v in q):
+            raise ValueError(f"point {tuple(p)!r} is not three finite numbers")
+        ratios.append([v.as_integer_ratio() for v in q])
+    den = 1
+    for r in ratios:
+        for _, d in r:
+            den = max(den, d)   # denominators are powers of two: the max is a common multiple
+    return [tuple(n * (den // d) for n, d in r) for r in ratios]
+
+
+def _det3(a, b, c) -> int:
+    return (a[2] * (b[0] * c[1] - c[0] * b[1]) + b[2] * (c[0] * a[1] - a[0] * c[1])
+            + c[2] * (a[0] * b[1] - b[0] * a[1]))
+
+
+def orient3d_exact(a, b, c, d) -> int:
+    """orient3d on integer (or Fraction) coordinates: sign of det(a - d, b - d, c - d).
+
+    >>> orient3d_exact((0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, -1))
+    1
+    """
+    r = [tuple(p[i] - d[i] for i in range(3)) for p in (a, b, c)]
+    v = _det3(*r)
+    return (v > 0) - (v < 0)
+
+
+def insphere_exact(a, b, c, d, e) -> int:
+    """insphere on integer (or Fraction) coordinates (+1: e inside, for orient3d(a,b,c,d) > 0).
+
+    >>> insphere_exact((0, 0, 0), (2, 0, 0), (0, 2, 0), (0, 0, -2), (1, 1, -1))
+    1
+    """
+    r = [tuple(p[i] - e[i] for i in range(3)) for p in (a, b, c, d)]
+    lift = [x * x + y * y + z * z for x, y, z in r]
+    ra, rb, rc, rd = r
+    v = (lift[3] * _det3(ra, rb, rc) - lift[2] * _det3(rd, ra, rb)
+         + lift[1] * _det3(rc, rd, ra) - lift[0] * _det3(rb, rc, rd))
+    return (v > 0) - (v < 0)
+
+
+def _orient_python(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz) -> int:
+    return orient3d_exact(*exact_coordinates_3d([(ax, ay, az), (bx, by, bz), (cx, cy, cz),
+                                                 (dx, dy, dz)]))
+
+
+def _insphere_python(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz, ex, ey, ez) -> int:
+    return insphere_exact(*exact_coordinates_3d([(ax, ay, az), (bx, by, bz), (cx, cy, cz),
+                                                 (dx, dy, dz), (ex, ey, ez)]))
+
+
+# --------------------------------------------------------------------- floating-point formulas
+@njit(cache=True)
+def _o3_det_perm(adx, ady, adz, bdx, bdy, bdz, cdx, cdy, cdz):
+    """orient3d's determinant from the differences, and its permanent (both in floating point)."""
+    bdxcdy = bdx * cdy
+    cdxbdy = cdx * bdy
+    cdxady = cdx * ady
+    adxcdy = adx * cdy
+    adxbdy = adx * bdy
+    bdxady = bdx * ady
+    det = adz * (bdxcdy - cdxbdy) + bdz * (cdxady - adxcdy) + cdz * (adxbdy - bdxady)
+    perm = ((abs(bdxcdy) + abs(cdxbdy)) * abs(adz) + (abs(cdxady) + abs(adxcdy)) * abs(bdz)
+            + (abs(adxbdy) + abs(bdxady)) * abs(cdz))
+    return det, perm
+
+
+@njit(cache=True)
+def _isp_det_perm(aex, aey, aez, bex, bey, bez, cex, cey, cez, dex, dey, dez):
+    """insphere's determinant from the differences, and its permanent (Shewchuk's formulas)."""
+    aexbey = aex * bey
+    bexaey = bex * aey
+    bexcey = bex * cey
+    cexbey = cex * bey
+    cexdey = cex * dey
+    dexcey = dex * cey
+    dexaey = dex * aey
+    aexdey = aex * dey
+    aexcey = aex * cey
+    cexaey = cex * aey
+    bexdey = bex * dey
+    dexbey = dex * bey
+    ab = aexbey - bexaey
+    bc = bexcey - cexbey
+    cd = cexdey - dexcey
+    da = dexaey - aexdey
+    ac = aexcey - cexaey
+    bd = bexdey - dexbey
+    abc = aez * bc - bez * ac + cez * ab
+    bcd = bez * cd - cez * bd + dez * bc
+    cda = cez * da + dez * ac + aez * cd
+    dab = dez * ab + aez * bd + bez * da
+    alift = aex * aex + aey * aey + aez * aez
+    blift = bex * bex + bey * bey + bez * bez
+    clift = cex * cex + cey * cey + cez * cez
+    dlift = dex * dex + dey * dey + dez * dez
+    det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd)
+    az, bz, cz, dz = abs(aez), abs(bez), abs(cez), abs(dez)
+    ab_p = abs(aexbey) + abs(bexaey)
+    bc_p = abs(bexcey) + abs(cexbey)
+    cd_p = abs(cexdey) + abs(dexcey)
+    da_p = abs(dexaey) + abs(aexdey)
+    ac_p = abs(aexcey) + abs(cexaey)
+    bd_p = abs(bexdey) + abs(dexbey)
+    perm = ((cd_p * bz + bd_p * cz + bc_p * dz) * alift + (da_p * cz + ac_p * dz + cd_p * az) * blift
+            + (ab_p * dz + bd_p * az + da_p * bz) * clift + (bc_p * az + ac_p * bz + ab_p * cz) * dlift)
+    return det, perm
+
+
+# --------------------------------------------------------------------- exact stages
+# After the filter: (0) if every difference is exact and all are small multiples of one power
+# of two, the float formula is error-free (integers below 2**53); (B) otherwise the exact
+# determinant of the *rounded* differences decides unless it is within Shewchuk's
+# errboundB of zero; (C) the exact determinant of the exact differences.  Expansions are
+# compressed as they go, so they stay a few components long.
+@njit(cache=True)
+def _scale3(v, lo_scaled):
+    """Scale v by 2**-e so that max|v| is in [0.5, 1); False if a non-zero value would fall
+    below lo_scaled (then nothing is scaled)."""
+    m = 0.0
+    for x in v:
+        m = max(m, abs(x))
+    if m == 0.0:
+        return True
+    _, e = math.frexp(m)
+    lo = math.ldexp(lo_scaled, e)   # the threshold in unscaled units
+    for x in v:
+        if x != 0.0 and abs(x) < lo:
+            return False
+    k = -e
+    while k != 0:                   # at most two exact steps of at most 2**1000
+        step = max(-1000, min(1000, k))
+        f = math.ldexp(1.0, step)
+        for i in range(v.shape[0]):
+            v[i] *= f
+        k -= step
+    return True
+
+
+@njit(cache=True)
+def _compress(e, n):
+    """Shewchuk's compress, in place: the same value as a shorter expansion; returns its length."""
+    bottom = n - 1
+    q = e[bottom]
+    for i in range(n - 2, -1, -1):
+        enow = e[i]
+        qnew = q + enow
+        small = enow - (qnew - q)
+        if small != 0.0:
+            e[bottom] = qnew
+            bottom -= 1
+            q = small
+        else:
+            q = qnew
+    top = 0
+    for i in range(bottom + 1, n):
+        hnow = e[i]
+        qnew = hnow + q
+        small = q - (qnew - hnow)
+        if small != 0.0:
+            e[top] = small
+            top += 1
+        q = qnew
+    e[top] = q
+    return top + 1
+
+
+@njit(cache=True)
+def _diffs(w, nrows):
+    """Differences of rows 0..nrows-1 minus the last row, exactly, into the workspace."""
+    v = w[_V:_V + 15]
+    last = 3 * nrows
+    for r in range(nrows):
+        for c in range(3):
+            s = 3 * r + c
+            w[_LEN + s] = diff(v[s], v[last + c], w[_D + 2 * s:_D + 2 * s + 2])
+
+
+@njit(cache=True)
+def _heads(w, n):
+    """Save the rounded differences and their tails at w[_H:], w[_TL:], and make the rounded
+    ones the working differences; True if any difference was inexact."""
+    inexact = False
+    for s in range(n):
+        if w[_LEN + s] == 2.0:
+            w[_TL + s] = w[_D + 2 * s]
+            w[_D + 2 * s] = w[_D + 2 * s + 1]
+            w[_LEN + s] = 1.0
+            inexact = True
+        else:
+            w[_TL + s] = 0.0
+        w[_H + s] = w[_D + 2 * s]
+    return inexact
+
+
+@njit(cache=True)
+def _o3_first_order(h, t):
+    """The part of orient3d's determinant linear in the tails t of the differences h."""
+    adx, ady, adz, bdx, bdy, bdz, cdx, cdy, cdz = h[0], h[1], h[2], h[3], h[4], h[5], h[6], h[7], h[8]
+    tax, tay, taz, tbx, tby, tbz, tcx, tcy, tcz = t[0], t[1], t[2], t[3], t[4], t[5], t[6], t[7], t[8]
+    return ((adz * ((bdx * tcy + tbx * cdy) - (cdx * tby + tcx * bdy))
+             + taz * (bdx * cdy - cdx * bdy))
+            + (bdz * ((cdx * tay + tcx * ady) - (adx * tcy + tax * cdy))
+               + tbz * (cdx * ady - adx * cdy))
+            + (cdz * ((adx * tby + tax * bdy) - (bdx * tay + tbx * ady))
+               + tcz * (adx * bdy - bdx * ady)))
+
+
+@njit(cache=True)
+def _isp_first_order(h, t):
+    """The part of insphere's determinant linear in the tails t of the differences h."""
+    ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz = (h[0], h[1], h[2], h[3], h[4], h[5],
+                                                      h[6], h[7], h[8], h[9], h[10], h[11])
+    tax, tay, taz, tbx, tby, tbz, tcx, tcy, tcz, tdx, tdy, tdz = (t[0], t[1], t[2], t[3], t[4],
+                                                                  t[5], t[6], t[7], t[8], t[9],
+                                                                  t[10], t[11])
+    ab = ax * by - bx * ay
+    bc = bx * cy - cx * by
+    cd = cx * dy - dx * cy
+    da = dx * ay - ax * dy
+    ac = ax * cy - cx * ay
+    bd = bx * dy - dx * by
+    eab = (ax * tby + tax * by) - (bx * tay + tbx * ay)
+    ebc = (bx * tcy + tbx * cy) - (cx * tby + tcx * by)
+    ecd = (cx * tdy + tcx * dy) - (dx * tcy + tdx * cy)
+    eda = (dx * tay + tdx * ay) - (ax * tdy + tax * dy)
+    eac = (ax * tcy + tax * cy) - (cx * tay + tcx * ay)
+    ebd = (bx * tdy + tbx * dy) - (dx * tby + tdx * by)
+    abc = az * bc - bz * ac + cz * ab
+    bcd = bz * cd - cz * bd + dz * bc
+    cda = cz * da + dz * ac + az * cd
+    dab = dz * ab + az * bd + bz * da
+    eabc = (az * ebc - bz * eac + cz * eab) + (taz * bc - tbz * ac + tcz * ab)
+    ebcd = (bz * ecd - cz * ebd + dz * ebc) + (tbz * cd - tcz * bd + tdz * bc)
+    ecda = (cz * eda + dz * eac + az * ecd) + (tcz * da + tdz * ac + taz * cd)
+    edab = (dz * eab + az * ebd + bz * eda) + (tdz * ab + taz * bd + tbz * da)
+    alift = ax * ax + ay * ay + az * az
+    blift = bx * bx + by * by + bz * bz
+    clift = cx * cx + cy * cy + cz * cz
+    dlift = dx * dx + dy * dy + dz * dz
+    ea = 2.0 * (ax * tax + ay * tay + az * taz)
+    eb = 2.0 * (bx * tbx + by * tby + bz * tbz)
+    ec = 2.0 * (cx * tcx + cy * tcy + cz * tcz)
+    ed = 2.0 * (dx * tdx + dy * tdy + dz * tdz)
+    return (((dlift * eabc + ed * abc) - (clift * edab + ec * dab))
+            + ((blift * ecda + eb * cda) - (alift * ebcd + ea * bcd)))
+
+
+@njit(cache=True)
+def _small_ints(w, nrows, bits):
+    """Stage (a): if the differences of rows 0..nrows-1 minus the last row (coordinates in
+    w[_V:]) are exact and multiples of one power of two, each below 2**bits in units of
+    it, store them in those units at w[_I:] and return True."""
+    last = 3 * nrows
+    m = 0.0
+    for s in range(last):
+        x, y = two_diff(w[_V + s], w[_V + last + s % 3])
+        if y != 0.0:
+            return False
+        w[_I + s] = x
+        m = max(m, abs(x))
+    if m == 0.0:
+        return True
+    _, e = math.frexp(m)
+    q = bits - e
+    if q > 1000 or q < -1000:
+        return False
+    f = math.ldexp(1.0, q)
+    for s in range(last):
+        d = w[_I + s]
+        t = d * f
+        if t != math.floor(t) or (t == 0.0 and d != 0.0):
+            return False
+        w[_I + s] = t
+    return True
+
+
+@njit(cache=True)
+def _minor2(w, i, j, out):
+    """out = x_i * y_j - x_j * y_i from the differences of rows i and j; returns the length."""
+    ln = w[_LEN:_LEN + 12]
+    xi = w[_D + 6 * i:_D + 6 * i + 2]
+    yi = w[_D + 6 * i + 2:_D + 6 * i + 4]
+    xj = w[_D + 6 * j:_D + 6 * j + 2]
+    yj = w[_D + 6 * j + 2:_D + 6 * j + 4]
+    p = w[_P1:_P1 + 8]
+    q = w[_P2:_P2 + 8]
+    t1 = w[_T1:_T1 + 8]
+    t2 = w[_T2:_T2 + 8]
+    n1 = mul(xi, int(ln[3 * i]), yj, int(ln[3 * j + 1]), p, t1, t2)
+    n2 = mul(xj, int(ln[3 * j]), yi, int(ln[3 * i + 1]), q, t1, t2)
+    negate(q, n2)
+    return _compress(out, add(p, n1, q, n2, out))
+
+
+@njit(cache=True)
+def _zm(w, row, m, nm, sgn, out):
+    """out = sgn * z_row * m for an expansion m (at most 16 long); returns the length."""
+    z = w[_D + 6 * row + 4:_D + 6 * row + 6]
+    nz = int(w[_LEN + 3 * row + 2])
+    n = mul(m, nm, z, nz, out, w[_T1:_T1 + 64], w[_T2:_T2 + 64])
+    if sgn < 0:
+        negate(out, n)
+    return n
+
+
+@njit(cache=True)
+def _minor3(w, i, mi, ni, si, j, mj, nj, sj, k, mk, nk, sk, out):
+    """out = z_i*(si*mi) + z_j*(sj*mj) + z_k*(sk*mk): a 3x3 minor; returns the length."""
+    p1 = w[_P1:_P1 + 64]
+    p2 = w[_P2:_P2 + 64]
+    p3 = w[_P3:_P3 + 64]
+    q = w[_Q:_Q + 128]
+    n1 = _zm(w, i, mi, ni, si, p1)
+    n2 = _zm(w, j, mj, nj, sj, p2)
+    n3 = _zm(w, k, mk, nk, sk, p3)
+    nq = add(p1, n1, p2, n2, q)
+    return _compress(out, add(q, nq, p3, n3, out))
+
+
+@njit(cache=True)
+def _sign_estimate(e, n):
+    est = 0.0
+    for i in range(n):
+        est += e[i]
+    top = e[n - 1]
+    return (1 if top > 0.0 else (-1 if top < 0.0 else 0)), est
+
+
+@njit(cache=True)
+def _orient_expansion(w):
+    """orient3d's determinant, exactly, from the differences in the workspace."""
+    m_bc = w[_M2:_M2 + 16]
+    m_ca = w[_M2 + 16:_M2 + 32]
+    m_ab = w[_M2 + 32:_M2 + 48]
+    n_bc = _minor2(w, 1, 2, m_bc)
+    n_ca = _minor2(w, 2, 0, m_ca)
+    n_ab = _minor2(w, 0, 1, m_ab)
+    out = w[_M3:_M3 + 192]
+    n = _minor3(w, 0, m_bc, n_bc, 1, 1, m_ca, n_ca, 1, 2, m_ab, n_ab, 1, out)
+    return _sign_estimate(out, n)
+
+
+@njit(cache=True)
+def orient3d_exact_stage(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz, w):
+    v = w[_V:_V + 12]
+    v[0] = ax; v[1] = ay; v[2] = az; v[3] = bx; v[4] = by; v[5] = bz
+    v[6] = cx; v[7] = cy; v[8] = cz; v[9] = dx; v[10] = dy; v[11] = dz
+    if _small_ints(w, 3, 16):
+        t = w[_I:_I + 9]
+        det, _ = _o3_det_perm(t[0], t[1], t[2], t[3], t[4], t[5], t[6], t[7], t[8])
+        return 1 if det > 0.0 else (-1 if det < 0.0 else 0)
+    if not _scale3(v, _O_EXACT_MIN):
+        with numba.objmode(s="int64"):
+            s = _orient_python(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz)
+        return s
+    _diffs(w, 3)
+    if _heads(w, 9):
+        sgn, est = _orient_expansion(w)
+        h = w[_H:_H + 9]
+        _, perm = _o3_det_perm(h[0], h[1], h[2], h[3], h[4], h[5], h[6], h[7], h[8])
+        if abs(est) >= O3D_ERRBOUND_B * perm:
+            return sgn
+        det = est + _o3_first_order(h, w[_TL:_TL + 9])
+        if perm > _C_PLO and abs(det) > O3D_ERRBOUND_C * perm + RESULT_ERRBOUND * abs(est):
+            return 1 if det > 0.0 else -1
+        _diffs(w, 3)
+    sgn, _ = _orient_expansion(w)
+    return sgn
+
+
+
+@njit(cache=True)
+def _insphere_expansion(w):
+    """insphere's determinant, exactly, from the differences in the workspace."""
+    ln = w[_LEN:_LEN + 26]
+    # 2x2 minors (x, y columns) of the rows a=0, b=1, c=2, d=3
+    ab = w[_M2:_M2 + 16]
+    bc = w[_M2 + 16:_M2 + 32]
+    cd = w[_M2 + 32:_M2 + 48]
+    da = w[_M2 + 48:_M2 + 64]
+    ac = w[_M2 + 64:_M2 + 80]
+    bd = w[_M2 + 80:_M2 + 96]
+    nab = _minor2(w, 0, 1, ab)
+    nbc = _minor2(w, 1, 2, bc)
+    ncd = _minor2(w, 2, 3, cd)
+    nda = _minor2(w, 3, 0, da)
+    nac = _minor2(w, 0, 2, ac)
+    nbd = _minor2(w, 1, 3, bd)
+    # 3x3 minors: abc = az*bc - bz*ac + cz*ab, bcd = bz*cd - cz*bd + dz*bc,
+    #             cda = cz*da + dz*ac + az*cd, dab = dz*ab + az*bd + bz*da
+    m_abc = w[_M3:_M3 + 192]
+    m_bcd = w[_M3 + 192:_M3 + 384]
+    m_cda = w[_M3 + 384:_M3 + 576]
+    m_dab = w[_M3 + 576:_M3 + 768]
+    ln[18] = _minor3(w, 0, bc, nbc, 1, 1, ac, nac, -1, 2, ab, nab, 1, m_abc)
+    ln[19] = _minor3(w, 1, cd, ncd, 1, 2, bd, nbd, -1, 3, bc, nbc, 1, m_bcd)
+    ln[20] = _minor3(w, 2, da, nda, 1, 3, ac, nac, 1, 0, cd, ncd, 1, m_cda)
+    ln[21] = _minor3(w, 3, ab, nab, 1, 0, bd, nbd, 1, 1, da, nda, 1, m_dab)
+    # lifts |row|^2
+    sq = w[_P1:_P1 + 8]
+    s2 = w[_P2:_P2 + 24]
+    for r in range(4):
+        lift = w[_LIFT + 24 * r:_LIFT + 24 * r + 24]
+        n = 0
+        for c in range(3):
+            x = w[_D + 6 * r + 2 * c:_D + 6 * r + 2 * c + 2]
+            nx = int(ln[3 * r + c])
+            nsq = mul(x, nx, x, nx, sq, w[_T1:_T1 + 8], w[_T2:_T2 + 8])
+            if c == 0:
+                for q in range(nsq):
+                    lift[q] = sq[q]
+                n = nsq
+            else:
+                for q in range(n):
+                    s2[q] = lift[q]
+                n = add(s2, n, sq, nsq, lift)
+        ln[22 + r] = _compress(lift, n)
+    # det = dlift*abc - clift*dab + blift*cda - alift*bcd
+    term = w[_TERM:_TERM + 9216]
+    t1 = w[_T1:_T1 + 9216]
+    t2 = w[_T2:_T2 + 9216]
+    acc = w[_ACC:_ACC + 36864]
+    acc2 = w[_ACC2:_ACC2 + 36864]
+    nacc = 0
+    for step in range(4):
+        r = 3 - step
+        m = w[_M3 + 192 * (0, 3, 2, 1)[step]:_M3 + 192 * (0, 3, 2, 1)[step] + 192]
+        nm = int(ln[(18, 21, 20, 19)[step]])
+        lift = w[_LIFT + 24 * r:_LIFT + 24 * r + 24]
+        nt = _compress(term, mul(m, nm, lift, int(ln[22 + r]), term, t1, t2))
+        if step % 2 == 1:
+            negate(term, nt)
+        if nacc == 0:
+            for q in range(nt):
+                acc[q] = term[q]
+            nacc = nt
+        else:
+            k = _compress(acc2, add(acc, nacc, term, nt, acc2))
+            for q in range(k):
+                acc[q] = acc2[q]
+            nacc = k
+    return _sign_estimate(acc, nacc)
+
+
+@njit(cache=True)
+def insphere_exact_stage(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz, ex, ey, ez, w):
+    v = w[_V:_V + 15]
+    v[0] = ax; v[1] = ay; v[2] = az; v[3] = bx; v[4] = by; v[5] = bz
+    v[6] = cx; v[7] = cy; v[8] = cz; v[9] = dx; v[10] = dy; v[11] = dz
+    v[12] = ex; v[13] = ey; v[14] = ez
+    if _small_ints(w, 4, 9):
+        t = w[_I:_I + 12]
+        det, _ = _isp_det_perm(t[0], t[1], t[2], t[3], t[4], t[5], t[6], t[7], t[8],
+                               t[9], t[10], t[11])
+        return 1 if det > 0.0 else (-1 if det < 0.0 else 0)
+    if not _scale3(v, _I_EXACT_MIN):
+        with numba.objmode(s="int64"):
+            s = _insphere_python(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz, ex, ey, ez)
+        return s
+    _diffs(w, 4)
+    if _heads(w, 12):
+        sgn, est = _insphere_expansion(w)
+        h = w[_H:_H + 12]
+        _, perm = _isp_det_perm(h[0], h[1], h[2], h[3], h[4], h[5], h[6], h[7], h[8],
+                                h[9], h[10], h[11])
+        if abs(est) >= ISP_ERRBOUND_B * perm:
+            return sgn
+        det = est + _isp_first_order(h, w[_TL:_TL + 12])
+        if perm > _C_PLO and abs(det) > ISP_ERRBOUND_C * perm + RESULT_ERRBOUND * abs(est):
+            return 1 if det > 0.0 else -1
+        _diffs(w, 4)
+    sgn, _ = _insphere_expansion(w)
+    return sgn
