@@ -68,6 +68,7 @@ from __future__ import annotations
 
 import numpy as np
 from numba import njit
+from numpy.typing import ArrayLike
 
 from .delaunay import Delaunay
 from .points import as_point, as_points
@@ -102,7 +103,7 @@ def _nearest_distance(pts: np.ndarray, q: np.ndarray) -> float:
     return float(np.min(np.hypot(pts[:, 0] - q[0], pts[:, 1] - q[1])))
 
 
-def max_clearance(points, start, goal) -> float:
+def max_clearance(points: ArrayLike, start: ArrayLike, goal: ArrayLike) -> float:
     """Largest radius of a disk that can move from ``start`` to ``goal`` among point obstacles.
 
     ``points`` are the obstacles ((n, 2)); ``start`` and ``goal`` are the disk

@@ -52,6 +52,7 @@ import math
 import numba
 import numpy as np
 from numba import njit
+from numpy.typing import ArrayLike
 
 from .delaunay import Delaunay
 from .expansion import EPSILON
@@ -238,7 +239,7 @@ def _collinear_answer(chain: np.ndarray, X: np.ndarray, Y: np.ndarray) -> tuple[
     return float(0.5 * ax + 0.5 * bx), float(0.5 * ay + 0.5 * by), float(0.5 * math.hypot(bx - ax, by - ay))
 
 
-def largest_empty_circle(points) -> tuple[float, float, float]:
+def largest_empty_circle(points: ArrayLike) -> tuple[float, float, float]:
     """Centre and radius ``(cx, cy, r)`` of a largest circle with no point strictly inside,
     whose centre lies in the convex hull of ``points``.
 

@@ -39,6 +39,7 @@ from fractions import Fraction
 
 import numpy as np
 from numba import njit
+from numpy.typing import ArrayLike
 
 from .points import as_points
 from .predicates import CCW_ERRBOUND_A, orient2d_nb, workspace
@@ -134,7 +135,7 @@ def _certainly_inside(pts: np.ndarray) -> np.ndarray:
     return inside
 
 
-def convex_hull(points, collinear: bool = False) -> np.ndarray:
+def convex_hull(points: ArrayLike, collinear: bool = False) -> np.ndarray:
     """Indices of the convex hull of ``points``, counter-clockwise from the smallest index.
 
     ``collinear=True`` also returns the points that lie on hull edges (in order

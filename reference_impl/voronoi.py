@@ -50,6 +50,7 @@ from fractions import Fraction
 
 import numpy as np
 from numba import njit
+from numpy.typing import ArrayLike
 
 from .delaunay import Delaunay
 from .points import as_points
@@ -60,7 +61,7 @@ _FAR = 2.0 ** 900         # circumcentres farther than this (in scaled units) ar
 _GEN_FAR = -5             # edge generators: >= 0 a bisector with that site, -1..-4 a box side
 
 
-def as_bbox(bbox) -> np.ndarray:
+def as_bbox(bbox: ArrayLike) -> np.ndarray:
     """Validate a box ``(xmin, ymin, xmax, ymax)`` and return it as a float64 array.
 
     >>> as_bbox((0, 0, 2, 1)).tolist()
@@ -416,7 +417,7 @@ def _slab_cells(X, Y, sites, ptr, nbr, box, out_x, out_y, out_ptr):
     return pos
 
 
-def voronoi(points, bbox) -> list[np.ndarray]:
+def voronoi(points: ArrayLike, bbox: ArrayLike) -> list[np.ndarray]:
     """Voronoi cell of every input point, clipped to ``bbox = (xmin, ymin, xmax, ymax)``.
 
     Returns a list with one counter-clockwise ``(k, 2)`` float64 polygon per

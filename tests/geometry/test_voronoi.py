@@ -150,18 +150,17 @@ def check_judge(points, box, cells=None):
     P = np.asarray(points, dtype=float).reshape(-1, 2)
     cells = voronoi(P, box) if cells is None else cells
     tol = _tol(P, box)
-    U = _unit(P, box)
     scale = np.array([box[2] - box[0], box[3] - box[1]], dtype=float)
     _, first = np.unique(P, axis=0, return_index=True)
+    first_set = set(first.tolist())
     total = 0.0
     for i, cell in enumerate(cells):
         if len(cell) == 0:
             continue
-        if i in set(first.tolist()):
+        if i in first_set:
             total += _float_area(_unit(cell, box))
         V = _unit(cell, box)
-        # distances measured in box units along each axis (the box is mapped to the unit square
-        # anisotropically, so compare true distances divided by the larger box side)
+        # true distances, in units of the larger box side
         for v, vu in zip(cell, V):
             d = np.hypot(*((P - v) / scale.max()).T)
             di = d[i]
@@ -171,7 +170,6 @@ def check_judge(points, box, cells=None):
                 others = (np.abs(d - di) <= tol) & np.any(P != P[i], axis=1)
                 assert others.any(), (i, v)
     assert abs(total - 1.0) <= 16 * tol * max(1, len(first)) ** 0.5, total
-    del U
 
 
 def random_box(rng, P):
