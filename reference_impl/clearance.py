@@ -33,29 +33,30 @@ Why this is right.
   path that avoids the obstacles (r > 0) passes from face to face through the
   interiors of Delaunay edges; so it can only cross edges with |ab| >= 2r, and
   it starts and ends at clearance d(start), d(goal) >= r.
-* *Sufficient.*  F_r is the complement of the union of the open disks of
-  radius r around the obstacles.  By Edelsbrunner's duality ("The union of balls
-  and its dual shape", 1995) the union deformation-retracts onto the alpha
-  complex K_r inside it, so (Alexander duality in the plane) two free points are
-  connected in F_r exactly when their faces are connected across edges that are
-  not in K_r, through triangles that are not in K_r.  A triangle is in K_r
-  only when its circumradius R < r, and then d(x) <= R < r on all of it, so the
-  faces of free points are never in K_r.  An edge ab is in K_r when
-  w(ab) < r, where w(ab) = |ab| / 2 if ab is Gabriel (both opposite angles at
-  most 90 degrees) and otherwise the smaller circumradius of its two faces (the
-  least clearance along the dual Voronoi edge).  So w(ab) >= |ab| / 2, and the
-  two criteria differ only on non-Gabriel edges with |ab| < 2r <= 2 w(ab).  Such
-  an edge is the longest edge of a triangle T that is obtuse opposite it; T's
-  other two edges are shorter still, and can be crossed (w >= r) only from
-  triangles that are themselves obtuse towards T.  These triangles form trees
-  hanging from ab, dead ends that join no two other components, and on each of
-  them d(x) < |longest edge| / 2 < r (the largest distance from a point of an
-  obtuse triangle to its nearest vertex is below half its longest side), so no
-  free start or goal lies in them.  Hence, for r <= min(d(start), d(goal)),
-  start and goal are connected in F_r exactly when their faces are connected
-  across edges with |ab| >= 2r, which is the formula.  The tests check it
-  against the Voronoi-diagram retraction (O'Dunlaing and Yap 1985) computed
-  with scipy and networkx, and against a union-of-disks computation in shapely.
+* *Sufficient.*  Fix r below min(d(start), d(goal)) and away from the finitely
+  many critical values (edge half-lengths and circumradii).  The obstacles'
+  disks of radius r have a dual alpha complex K_r (Delaunay triangles with
+  circumradius R < r, and edges ab with w(ab) < r, where w(ab) = |ab| / 2 if
+  ab is Gabriel, i.e. both opposite angles are at most 90 degrees, and
+  otherwise the smaller circumradius of its two faces: the least clearance
+  along the dual Voronoi edge).  By Edelsbrunner's duality ("The union of balls
+  and its dual shape", 1995) the union of the disks deformation-retracts onto
+  K_r, so (Alexander duality in the plane) two free points lie in one piece of
+  F_r exactly when their faces are joined by a chain of faces not in K_r,
+  consecutive ones sharing an edge not in K_r.  The face of a free point is
+  never in K_r (d(x) <= R on a triangle).  Since w(ab) >= |ab| / 2, this chain
+  condition and ours (|ab| >= 2r) differ only on non-Gabriel edges with
+  |ab| < 2r < 2 w(ab).  Such an edge is the longest edge of a triangle T that is
+  obtuse opposite it; T's other edges are shorter still and can be crossed
+  (w > r) only from triangles obtuse towards T, and so on: these triangles form
+  trees hanging from ab, dead ends that join no two other components, and on
+  each of them d(x) < (longest edge) / 2 < r (in an obtuse triangle every point
+  is closer than half the longest side to some vertex), so they hold no free
+  start or goal.  Hence start and goal are connected in F_r exactly when their
+  faces are connected across edges with |ab| >= 2r; F_r shrinks as r grows and
+  is closed, so the largest r is the formula.  The tests check it against the
+  Voronoi-diagram retraction (O'Dunlaing and Yap 1985) computed with scipy and
+  networkx, and against a union-of-disks computation in shapely.
 
 Conventions and edge cases: duplicated obstacles count once; no obstacle gives
 ``inf``; a start or goal on an obstacle gives 0.0; start == goal gives
