@@ -552,14 +552,14 @@ def gabriel_graph(points) -> np.ndarray:
     return _sorted_edges(g.u[keep], g.v[keep])
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _in_lune(X, Y, r, p, q, w):
     """max(|rp|, |rq|) < |pq| exactly."""
     return (sq_dist_cmp(X[r], Y[r], X[p], Y[p], X[p], Y[p], X[q], Y[q], w) < 0
             and sq_dist_cmp(X[r], Y[r], X[q], Y[q], X[p], Y[p], X[q], Y[q], w) < 0)
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _disc_step(X, Y, indptr, indices, stack, st, seen, stamp, c, o, w):
     """One step of the search of the open disc centred c with radius |co|.
 
@@ -613,8 +613,8 @@ def _rng_mask(X, Y, u, v, a1, a2, indptr, indices):
                 (a2[i] >= 0 and _in_lune(X, Y, a2[i], p, q, w)):
             keep[i] = False
             continue
-        seen_p[p] = i
-        seen_q[q] = i
+        seen_p[p] = seen_p[q] = i      # q is on the boundary of p's disc, not inside: skip
+        seen_q[q] = seen_q[p] = i      # the exact (tie) evaluation of |pq| against itself
         stack_p[0] = p
         stack_q[0] = q
         st_p[0] = 1
