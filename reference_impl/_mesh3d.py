@@ -38,6 +38,17 @@ Because every conflict test is strict and exact, each boundary face has p
 strictly on its inner side, so no flat tetrahedron is ever created, even on
 cospherical input such as integer grids.  Arrays fill up: ``insert`` then
 returns ``GROW`` without touching the mesh and the caller enlarges them.
+
+Driven from Python by ``delaunay3d._Mesh`` (points already in insertion order):
+
+>>> import numpy as np
+>>> from reference_impl.delaunay3d import _Mesh
+>>> m = _Mesh(np.array([[0., 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1], [0.875, 0.875, 0.875]]))
+>>> simplices, neighbors, _, hull = m.extract()
+>>> simplices.tolist()                 # three tetrahedra around the edge 0-4
+[[0, 1, 3, 4], [0, 3, 2, 4], [0, 2, 1, 4]]
+>>> len(hull)
+6
 """
 from __future__ import annotations
 

@@ -53,8 +53,8 @@ def insphere(a, b, c, d, e) -> int:
 def hull_volume6(P: list, points: np.ndarray) -> int:
     """6 x the convex hull volume, exactly, from Qhull's facets (each checked to be supporting)."""
     pts = np.asarray(points, dtype=float)
-    pts = pts - pts.min(axis=0)          # Qhull only proposes facets; they are checked below
-    hull = ConvexHull(np.ldexp(pts, -np.frexp(pts.max())[1]))
+    pts = np.ldexp(pts, -np.frexp(np.abs(pts).max())[1])
+    hull = ConvexHull(pts - pts.min(axis=0))   # Qhull only proposes facets; checked below
     first = tuple(hull.vertices[:4])
     c4 = [sum(P[i][j] for i in first) for j in range(3)]          # 4 x an interior point
     P4 = [(4 * x, 4 * y, 4 * z) for x, y, z in P]
@@ -169,6 +169,7 @@ DEGENERATE = {
     "huge-1e300": np.random.default_rng(3).random((150, 3)) * 1e300,
     "mixed-1e-300-1e300": np.vstack([cube_grid(3, 3, 3) * 1e-300, cube_grid(2, 2, 2) * 1e300]),
     "offset-1e9": 1e9 + cube_grid(4, 4, 4) * 1e-6,
+    "extreme-1.7e308": np.random.default_rng(4).uniform(-1, 1, (60, 3)) * 1.7e308,
 }
 
 
