@@ -12,7 +12,6 @@ Example:
 from __future__ import annotations
 
 import hashlib
-import os
 import sys
 import time
 from concurrent.futures import ProcessPoolExecutor, as_completed
@@ -23,8 +22,7 @@ from typing import Iterable
 from .judge import Judge
 from .problems import load_problem
 from .store import ResultStore
-from .submissions import Submission, SubmissionError
-from .verdicts import JudgeResult, TestResult, Verdict
+from .verdicts import JudgeResult, TestResult
 
 
 @dataclass

@@ -91,8 +91,7 @@ class Judge:
         self.stop_at_first_failure = stop_at_first_failure
         self.hide = list(hide)
         self.tests = self.problem.tests()
-        self.limits = Limits(cpu_s=self.problem.time_limit, wall_s=3 * self.problem.time_limit + 1,
-                             memory_mb=self.problem.memory_mb, output_mb=self.problem.output_mb)
+        self.limits = Limits(cpu_s=self.problem.time_limit, memory_mb=self.problem.memory_mb, output_mb=self.problem.output_mb)
         self.cover = installed_paths([m for m in self.problem.forbidden if m not in ("reference_impl", "grader")])
         self._args = [None] * len(self.tests)
         self._answers = [None] * len(self.tests)

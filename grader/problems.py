@@ -8,7 +8,7 @@ from ``reference_impl`` (in the grader's process), and they are cached under
 ``<checkout>/.cache/grader/`` keyed by a digest of the package.
 
 Example:
-    >>> p = load_problem("delaunay")                        # doctest: +SKIP
+    >>> p = load_problem("delaunay")
     >>> [g.name for g in p.groups][:2], p.entry
     (['sample', 'tiny'], 'delaunay')
 """

@@ -32,6 +32,12 @@ CLK_TCK = os.sysconf("SC_CLK_TCK")
 MAX_REPLY_BYTES = 64 << 20
 
 
+def wall_limit_for(time_limit: float) -> float:
+    """Wall-clock cap of one test: TLE is decided on CPU time; this catches sleeping and gives
+    slack on a loaded machine."""
+    return 3 * time_limit + 1.0
+
+
 @dataclass
 class RunOutcome:
     """What happened in one run. ``status`` is one of: ok, error, bad_type, violation, timeout,
@@ -111,7 +117,6 @@ class _Child:
         self.rusage = None
         self.pending = (json.dumps({"source": source, "filename": config["filename"]}) + "\n").encode()
         self.violation: str | None = None
-        self.bad_reply: str | None = None
 
     def send(self, obj: dict) -> None:
         self.pending += (json.dumps(obj, allow_nan=True, separators=(",", ":")) + "\n").encode()
@@ -166,7 +171,6 @@ class _Child:
             return
         self.buf += chunk
         if len(self.buf) > MAX_REPLY_BYTES:
-            self.bad_reply = "output_limit"
             self.buf = b""
             self.replies.append({"output_limit": True})
             return
@@ -230,7 +234,7 @@ def _child_config(box: Sandbox, mode: str, entry: str, forbidden: Sequence[str],
             "read_roots": read_roots, "write_roots": [work]}
 
 
-def _classify_death(child: _Child, cpu_limit: float, memory_mb: float, limit_mb: int) -> RunOutcome:
+def _classify_death(child: _Child, memory_mb: float, limit_mb: int) -> RunOutcome:
     code = child.exit_status
     if code is not None and code < 0:
         sig = -code
@@ -296,7 +300,7 @@ class FunctionWorker:
             outcome = _error_outcome(err)
             outcome.status = "memory" if outcome.status == "memory" else "load_error"
         elif outcome is None and reply is None:
-            outcome = _classify_death(self.child, self.total_cpu_s, 0.0, self.box.limits.memory_mb)
+            outcome = _classify_death(self.child, 0.0, self.box.limits.memory_mb)
             outcome.message = "while loading: " + outcome.message
         if outcome is not None:
             if _output_overflow(self.box, self.out_paths):
@@ -324,7 +328,7 @@ class FunctionWorker:
         cpu0 = _cpu_seconds(child.pid)
         wall0 = time.monotonic()
         child.send({"id": rid, "args": args})
-        wall_limit = 3 * time_limit + 1.0
+        wall_limit = wall_limit_for(time_limit)
         deadline = wall0 + wall_limit
         cpu_exceeded = False
         while True:
@@ -364,7 +368,7 @@ class FunctionWorker:
             if late:
                 self.stop()
                 return RunOutcome("violation", message=str(late[0]["violation"])[:500], time_s=time_s)
-            outcome = _classify_death(child, self.total_cpu_s, mem, self.box.limits.memory_mb)
+            outcome = _classify_death(child, mem, self.box.limits.memory_mb)
             outcome.time_s = time_s
             self.stop()
             return outcome
@@ -402,7 +406,7 @@ def run_stdio(box: Sandbox, source: str, input_text: str, time_limit: float, for
     finally:
         for fd in (fin, fout, ferr):
             os.close(fd)
-    wall_limit = 3 * time_limit + 1.0
+    wall_limit = wall_limit_for(time_limit)
     deadline = time.monotonic() + wall_limit
     reply = None
     cpu_exceeded = False
@@ -438,7 +442,7 @@ def run_stdio(box: Sandbox, source: str, input_text: str, time_limit: float, for
             outcome.status = "load_error"
         return outcome
     if child.exit_status != 0:
-        outcome = _classify_death(child, time_limit, mem, box.limits.memory_mb)
+        outcome = _classify_death(child, mem, box.limits.memory_mb)
         outcome.time_s = time_s
         if child.exit_status and child.exit_status > 0:
             outcome.message = f"the program exited with code {child.exit_status}"

@@ -15,7 +15,7 @@ A :class:`Sandbox` starts child processes that run student code with:
 Run ``python -m grader.sandbox`` to print what this machine supports.
 
 Example:
-    >>> with Sandbox(Limits(cpu_s=2, wall_s=4, memory_mb=512)) as box:   # doctest: +SKIP
+    >>> with Sandbox(Limits(cpu_s=2, memory_mb=512)) as box:   # doctest: +SKIP
     ...     proc = box.spawn([sys.executable, "-I", "-c", "print(1)"], stdout=out_fd)
 """
 
@@ -23,7 +23,6 @@ from __future__ import annotations
 
 import ctypes
 import ctypes.util
-import errno
 import fcntl
 import os
 import resource
@@ -33,7 +32,7 @@ import subprocess
 import sys
 import tempfile
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Sequence
 
@@ -62,12 +61,11 @@ class Limits:
     """Resource limits for one child process.
 
     Example:
-        >>> Limits(cpu_s=1.0, wall_s=3.0, memory_mb=256).memory_mb
+        >>> Limits(cpu_s=1.0, memory_mb=256).memory_mb
         256
     """
 
-    cpu_s: float = 2.0  #: RLIMIT_CPU (whole process life), seconds
-    wall_s: float = 5.0  #: enforced by the parent (process-group kill)
+    cpu_s: float = 2.0  #: RLIMIT_CPU (whole process life), seconds; wall time is the runner's job
     memory_mb: int = 1024  #: RLIMIT_AS, MiB
     output_mb: int = 16  #: RLIMIT_FSIZE: largest file (stdout/stderr captures too), MiB
     open_files: int = 64  #: RLIMIT_NOFILE
