@@ -48,6 +48,9 @@ MS_RDONLY, MS_MOVE = 1, 8192
 UID_BASE = 62000
 UID_COUNT = 512
 LOCK_DIR = Path(tempfile.gettempdir()) / "grader-sandbox-uids"
+#: Never covered even if asked (e.g. a results file in the current directory "/").
+SYSTEM_DIRS = frozenset({"/", "/usr", "/lib", "/lib64", "/bin", "/sbin", "/etc", "/proc", "/dev", "/sys", "/var",
+                         "/tmp", "/run", "/opt"})
 #: Path of the child's private working directory inside its mount namespace (root mode).
 JAIL_WORKDIR = "/tmp/work"
 
@@ -127,7 +130,7 @@ class Sandbox:
         self.host_workdir = ""  # non-root mode: the child's working directory
         repo = str(Path(__file__).resolve().parent.parent)
         hidden = {"/root", "/home", repo, *(os.path.realpath(p) for p in hide)}
-        self._hidden = sorted(h for h in hidden if os.path.isdir(h))
+        self._hidden = sorted(h for h in hidden if os.path.isdir(h) and h not in SYSTEM_DIRS)
         self._cover = sorted({os.path.realpath(c) for c in cover if os.path.exists(c)})
         self._plan: _Plan | None = None
 
