@@ -33,7 +33,7 @@ bisectors is crossed first) are made exactly: a floating-point filter with a
 proven error bound, and Python integers when it cannot decide.  The sign makes
 the projection of the current site on the edge strictly increase, so the walk
 always ends.  Which circumcentres lie in H is decided by exact orientation tests
-on the computed centres.  The centres and radii themselves are floating-point
+on the computed centres (a binary search in the hull polygon).  The centres and radii themselves are floating-point
 values (a few ulps of the coordinates, more for nearly flat triangles); they are
 computed after scaling all points by one power of two, so 1e-300 and 1e300
 inputs behave like 1.  Among equally large candidates the one with the
@@ -56,6 +56,7 @@ from numpy.typing import ArrayLike
 
 from .delaunay import Delaunay
 from .expansion import EPSILON
+from .hull import convex_hull
 from .points import as_points
 from .predicates import orient2d_nb, workspace
 from .voronoi import _pow2_exponent, circumcentres, delaunay_adjacency
@@ -177,32 +178,29 @@ def _boundary_candidates(X, Y, hull, ptr, nbr, cx, cy, cr):
 
 
 @njit(cache=True)
-def _in_hull(simp, nbrs, X, Y, qx, qy, todo, w):
-    """For each query i with todo[i], is (qx[i], qy[i]) in the closed hull?  Visibility
-    walk from triangle i (the query is the circumcentre of triangle i), exact orientations;
-    in a Delaunay triangulation this walk cannot cycle."""
-    m = simp.shape[0]
+def _in_hull(V, X, Y, qx, qy, todo, w):
+    """For each query i with todo[i], is (qx[i], qy[i]) in the closed convex polygon with
+    vertex indices V (strictly convex, counter-clockwise)?  Binary search over the fan
+    from V[0], exact orientations: O(log h) per query."""
+    h = V.shape[0]
     res = np.zeros(qx.shape[0], dtype=np.bool_)
+    x0, y0 = X[V[0]], Y[V[0]]
     for i in range(qx.shape[0]):
         if not todo[i]:
             continue
-        t = i
-        steps = 0
-        while t >= 0:
-            moved = False
-            for kk in range(3):
-                a = simp[t, (kk + 1) % 3]
-                b = simp[t, (kk + 2) % 3]
-                if orient2d_nb(X[a], Y[a], X[b], Y[b], qx[i], qy[i], w) < 0:
-                    t = nbrs[t, kk]
-                    moved = True
-                    break
-            if not moved:
-                res[i] = True
-                break
-            steps += 1
-            if steps > m:
-                raise RuntimeError("largest_empty_circle: point location walk cycled (internal error)")
+        px, py = qx[i], qy[i]
+        if orient2d_nb(x0, y0, X[V[1]], Y[V[1]], px, py, w) < 0:
+            continue
+        if orient2d_nb(x0, y0, X[V[h - 1]], Y[V[h - 1]], px, py, w) > 0:
+            continue
+        lo, hi = 1, h - 2            # the last k with q on or left of V0 -> Vk
+        while lo < hi:
+            mid = (lo + hi + 1) // 2
+            if orient2d_nb(x0, y0, X[V[mid]], Y[V[mid]], px, py, w) >= 0:
+                lo = mid
+            else:
+                hi = mid - 1
+        res[i] = orient2d_nb(X[V[lo]], Y[V[lo]], X[V[lo + 1]], Y[V[lo + 1]], px, py, w) >= 0
     return res
 
 
@@ -228,13 +226,12 @@ def _collinear_answer(chain: np.ndarray, X: np.ndarray, Y: np.ndarray) -> tuple[
         return float(X[chain[0]]), float(Y[chain[0]]), 0.0
     xs, ys = X[chain], Y[chain]
     along = xs if xs[-1] != xs[0] else ys             # gaps are proportional to this coordinate
-    gap = np.diff(along)                              # rounding is monotone: the longest is a max
-    top = np.flatnonzero(gap == gap.max())
-    if len(top) > 1:                                  # settle float ties exactly
-        from fractions import Fraction
-        exact = [Fraction(float(along[i + 1])) - Fraction(float(along[i])) for i in top]
-        top = [top[exact.index(max(exact))]]
-    i = int(top[0])
+    lo, hi = along[:-1], along[1:]
+    gap = hi - lo                                     # gap + err == hi - lo exactly (two_diff)
+    hv = hi - gap
+    err = (hi - (gap + hv)) + (hv - lo)
+    # the longest gap exactly: largest float gap, then largest error term; the first on ties
+    i = int(np.argmax(np.where(gap == gap.max(), err, -np.inf)))
     ax, ay, bx, by = xs[i], ys[i], xs[i + 1], ys[i + 1]
     return float(0.5 * ax + 0.5 * bx), float(0.5 * ay + 0.5 * by), float(0.5 * math.hypot(bx - ax, by - ay))
 
@@ -270,7 +267,7 @@ def largest_empty_circle(points: ArrayLike) -> tuple[float, float, float]:
     nb = _boundary_candidates(X, Y, d.hull.astype(np.int64), ptr, nbr, bx, by, br)
     px, py, pr = _circumcircles(simp, X, Y)
     ok = np.isfinite(px) & np.isfinite(py) & np.isfinite(pr)
-    ok = _in_hull(simp, d.neighbors, X, Y, px, py, ok, workspace())
+    ok = _in_hull(convex_hull(pts), X, Y, px, py, ok, workspace())
     cx = np.concatenate([bx[:nb], px[ok]])
     cy = np.concatenate([by[:nb], py[ok]])
     cr = np.concatenate([br[:nb], pr[ok]])

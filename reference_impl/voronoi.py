@@ -46,8 +46,6 @@ result does not depend on the order of the input.
 from __future__ import annotations
 
 import math
-from fractions import Fraction
-
 import numpy as np
 from numba import njit
 from numpy.typing import ArrayLike
@@ -135,7 +133,7 @@ def circumcentres(simp: np.ndarray, X: np.ndarray, Y: np.ndarray) -> tuple[np.nd
     vertices are listed, so every cell sharing it gets the same doubles.  The edge
     vectors are scaled by a power of two first (exact), so tiny triangles do not
     underflow.  A triangle so flat that the sign of its float determinant is not
-    certain is computed exactly (Fractions), and a centre beyond 2**900 is pulled
+    certain is computed exactly (Python integers), and a centre beyond 2**900 is pulled
     back to that distance along its direction.
 
     >>> cx, cy = circumcentres(np.array([[0, 1, 2]]), np.array([0.0, 2.0, 0.0]), np.array([0.0, 0.0, 2.0]))
@@ -173,19 +171,22 @@ def circumcentres(simp: np.ndarray, X: np.ndarray, Y: np.ndarray) -> tuple[np.nd
 
 
 def _exact_circumcentre(ax: float, ay: float, bx: float, by: float, cx: float, cy: float) -> tuple[float, float]:
-    """The circumcentre in exact rational arithmetic, rounded (pulled back to 2**900 if farther)."""
-    A, B, C = (Fraction(ax), Fraction(ay)), (Fraction(bx), Fraction(by)), (Fraction(cx), Fraction(cy))
-    ux, uy, vx, vy = B[0] - A[0], B[1] - A[1], C[0] - A[0], C[1] - A[1]
+    """The circumcentre in exact integer arithmetic, correctly rounded (pulled back to
+    distance 2**900 along its direction if farther, or if the points are collinear)."""
+    ratios = [v.as_integer_ratio() for v in (ax, ay, bx, by, cx, cy)]
+    one = max(d for _, d in ratios)                  # a power of two: a common denominator
+    Ax, Ay, Bx, By, Cx, Cy = (n * (one // d) for n, d in ratios)
+    ux, uy, vx, vy = Bx - Ax, By - Ay, Cx - Ax, Cy - Ay
     uu, vv = ux * ux + uy * uy, vx * vx + vy * vy
     nx, ny = vy * uu - uy * vv, ux * vv - vx * uu
     den = 2 * (ux * vy - uy * vx)
+    far = 2 ** 900
     if den > 0:
-        ox, oy = A[0] + nx / den, A[1] + ny / den
-        if max(abs(ox), abs(oy)) < _FAR:
-            return float(ox), float(oy)
-    # collinear (not a triangle) or beyond 2**900: keep the direction of the centre
-    m = max(abs(nx), abs(ny)) or Fraction(1)
-    return float(A[0] + _FAR * nx / m), float(A[1] + _FAR * ny / m)
+        X, Y, W = Ax * den + nx, Ay * den + ny, den * one        # the centre is (X / W, Y / W)
+        if max(abs(X), abs(Y)) < far * W:
+            return X / W, Y / W                                  # int / int rounds correctly
+    m = max(abs(nx), abs(ny)) or 1
+    return ax + _FAR * (nx / m), ay + _FAR * (ny / m)
 
 
 @njit(cache=True, inline="always")
