@@ -206,6 +206,16 @@ def test_circle_with_and_without_centre():
     assert largest_empty_circle(circle(400, centre=True))[2] == pytest.approx(0.5, rel=1e-3)
 
 
+def test_nearly_collinear_doubles():
+    # (0.1 k, 0.3 k) is collinear on paper, not in doubles: a hull of width ~1e-14, full of slivers
+    k = np.arange(800.0)
+    P = np.c_[0.1 * k, 0.3 * k]
+    ans = largest_empty_circle(P)
+    check_valid(P, ans)
+    gaps = np.hypot(*np.diff(P, axis=0).T)
+    assert ans[2] == pytest.approx(0.5 * gaps.max(), rel=1e-9)
+
+
 def test_flat_inputs():
     assert largest_empty_circle([(3, 4)]) == (3.0, 4.0, 0.0)
     assert largest_empty_circle([(3, 4), (3, 4)]) == (3.0, 4.0, 0.0)

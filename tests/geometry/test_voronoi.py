@@ -230,6 +230,13 @@ def test_points_and_box_of_very_different_scales(case):
     check_cells_exact(P, box, cells)
 
 
+def test_nearly_collinear_doubles():
+    k = np.arange(300.0)
+    P = np.c_[0.1 * k, 0.3 * k]            # collinear on paper only: slivers everywhere
+    box = (-1.0, -1.0, 31.0, 91.0)
+    check_judge(P, box)
+
+
 def test_collinear_cells_are_slabs():
     P = np.array([(0.0, 0.0), (1.0, 1.0), (3.0, 3.0)])
     cells = voronoi(P, (-5, -5, 5, 5))
