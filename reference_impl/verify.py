@@ -32,7 +32,8 @@ from __future__ import annotations
 
 from typing import Iterable, Sequence
 
-import numpy as np
+import math
+import operator
 
 __all__ = ["exact_coordinates", "orient_exact", "incircle_exact", "convex_hull_exact",
            "check_delaunay", "check_triangulation_size", "brute_force_empty_circles"]
@@ -50,7 +51,7 @@ def exact_coordinates(points: Iterable[Sequence[float]]) -> list[tuple[int, int]
     ratios = []
     for p in points:
         x, y = float(p[0]), float(p[1])
-        if not (np.isfinite(x) and np.isfinite(y)):
+        if not (math.isfinite(x) and math.isfinite(y)):
             raise ValueError(f"point {tuple(p)!r} is not finite")
         ratios.append((x.as_integer_ratio(), y.as_integer_ratio()))
     den = 1
@@ -118,6 +119,12 @@ def convex_hull_exact(P: list[tuple[int, int]], keep_collinear: bool = True) -> 
     return lower[:-1] + upper[:-1]
 
 
+def _rows(triangles) -> list[list]:
+    """Triangles as a list of rows (numpy arrays, lists or tuples), without importing numpy."""
+    rows = triangles.tolist() if hasattr(triangles, "tolist") else list(triangles)
+    return [list(t) for t in rows]
+
+
 def check_delaunay(points, triangles) -> tuple[bool, str]:
     """Check exactly that ``triangles`` is a Delaunay triangulation of ``points``.
 
@@ -129,7 +136,7 @@ def check_delaunay(points, triangles) -> tuple[bool, str]:
     """
     P = exact_coordinates(points)
     n = len(P)
-    tris = np.asarray(triangles, dtype=object).reshape(-1, 3) if len(triangles) else np.zeros((0, 3), int)
+    tris = _rows(triangles)
     canon: dict[tuple[int, int], int] = {}
     for i, p in enumerate(P):
         canon.setdefault(p, i)
@@ -137,9 +144,11 @@ def check_delaunay(points, triangles) -> tuple[bool, str]:
     T: list[tuple[int, int, int]] = []
     for k, t in enumerate(tris):
         try:
-            ids = [int(v) for v in t]
-        except (TypeError, ValueError):
+            ids = [operator.index(v) for v in t]
+        except TypeError:
             return False, f"triangle {k} has non-integer vertex indices {list(t)!r}"
+        if len(ids) != 3:
+            return False, f"triangle {k} = {ids} does not have exactly 3 vertices"
         if any(v < 0 or v >= n for v in ids):
             return False, f"triangle {k} = {ids} has an index outside 0..{n - 1}"
         T.append((rep[ids[0]], rep[ids[1]], rep[ids[2]]))
@@ -210,7 +219,7 @@ def brute_force_empty_circles(points, triangles) -> tuple[bool, str]:
     Slow but independent of any edge structure; meant for small test inputs.
     """
     P = exact_coordinates(points)
-    for k, (a, b, c) in enumerate(np.asarray(triangles).reshape(-1, 3).tolist()):
+    for k, (a, b, c) in enumerate(_rows(triangles)):
         for i, p in enumerate(P):
             if incircle_exact(P[a], P[b], P[c], p) > 0:
                 return False, f"point {i} is inside the circumcircle of triangle {k}"
