@@ -18,13 +18,18 @@ from ._jitcache import purge_stale_cache
 purge_stale_cache()
 
 from .bowyer_watson import Step, bowyer_watson, dry_run  # noqa: E402
+from .clearance import max_clearance  # noqa: E402
 from .constrained import ConstrainedDelaunay, constrained_delaunay  # noqa: E402
 from .delaunay import Delaunay  # noqa: E402
+from .empty_circle import largest_empty_circle  # noqa: E402
+from .hull import convex_hull  # noqa: E402
 from .navmesh import NavMesh, PolygonTriangulation, funnel, polygon_triangulation, shortest_path  # noqa: E402
 from .predicates import incircle, orient2d  # noqa: E402
+from .voronoi import voronoi  # noqa: E402
 
 __all__ = [
     "Delaunay", "bowyer_watson", "Step", "dry_run", "orient2d", "incircle",
     "ConstrainedDelaunay", "constrained_delaunay",
     "NavMesh", "PolygonTriangulation", "funnel", "polygon_triangulation", "shortest_path",
+    "convex_hull", "voronoi", "largest_empty_circle", "max_clearance",
 ]
