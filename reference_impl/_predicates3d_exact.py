@@ -61,7 +61,7 @@ _C_PLO = 2.0 ** -900             # stage (c) only where no product can underflow
 # two-component differences: 2x2 minors 16, 3x3 minors 192, lifts 24,
 # lift * minor 9216, sum of four such terms 36864.
 _V = 0             # 15 scaled coordinates
-_LEN = 16          # lengths: 12 differences, (unused), 4 of 3x3 minors at 18, 4 of lifts at 22
+_LEN = 16          # lengths: 12 differences, 6 2x2 minors at 12, 4 3x3 minors at 18, 4 lifts at 22
 _I = 48            # 12 differences as small integers (stage 0)
 _D = 64            # 12 differences, 2 slots each
 _M2 = 88           # six 2x2 minors, 16 each
@@ -367,29 +367,48 @@ def _small_ints(w, nrows, bits):
     return True
 
 
+# Minor tables (rows a=0, b=1, c=2, d=3 of the differences).  Indices come from these
+# arrays rather than from literals in the code, so numba compiles one version of each
+# helper instead of one per literal combination.
+# 2x2 minors x_i*y_j - x_j*y_i: (i, j, slot); rows 0-5 for insphere, 6-8 for orient3d
+_PAIRS = np.array([[0, 1, 0], [1, 2, 1], [2, 3, 2], [3, 0, 3], [0, 2, 4], [1, 3, 5],
+                   [1, 2, 0], [2, 0, 1], [0, 1, 2]], dtype=np.int64)
+# 3x3 minors sum of sign * z_row * minor2[slot]: three (row, slot, sign) triples
+_TRIPLES = np.array([[0, 1, 1, 1, 4, -1, 2, 0, 1],    # abc = az*bc - bz*ac + cz*ab
+                     [1, 2, 1, 2, 5, -1, 3, 1, 1],    # bcd = bz*cd - cz*bd + dz*bc
+                     [2, 3, 1, 3, 4, 1, 0, 2, 1],     # cda = cz*da + dz*ac + az*cd
+                     [3, 0, 1, 0, 5, 1, 1, 3, 1],     # dab = dz*ab + az*bd + bz*da
+                     [0, 0, 1, 1, 1, 1, 2, 2, 1]],    # orient3d: az*bc + bz*ca + cz*ab
+                    dtype=np.int64)
+
+
 @njit(cache=True)
-def _minor2(w, i, j, out):
-    """out = x_i * y_j - x_j * y_i from the differences of rows i and j; returns the length."""
-    ln = w[_LEN:_LEN + 12]
+def _minor2(w, q):
+    """The 2x2 minor of row q of _PAIRS into its slot at w[_M2:], compressed."""
+    i, j, slot = _PAIRS[q, 0], _PAIRS[q, 1], _PAIRS[q, 2]
+    ln = w[_LEN:_LEN + 18]
     xi = w[_D + 6 * i:_D + 6 * i + 2]
     yi = w[_D + 6 * i + 2:_D + 6 * i + 4]
     xj = w[_D + 6 * j:_D + 6 * j + 2]
     yj = w[_D + 6 * j + 2:_D + 6 * j + 4]
     p = w[_P1:_P1 + 8]
-    q = w[_P2:_P2 + 8]
+    r = w[_P2:_P2 + 8]
     t1 = w[_T1:_T1 + 8]
     t2 = w[_T2:_T2 + 8]
+    out = w[_M2 + 16 * slot:_M2 + 16 * slot + 16]
     n1 = mul(xi, int(ln[3 * i]), yj, int(ln[3 * j + 1]), p, t1, t2)
-    n2 = mul(xj, int(ln[3 * j]), yi, int(ln[3 * i + 1]), q, t1, t2)
-    negate(q, n2)
-    return _compress(out, add(p, n1, q, n2, out))
+    n2 = mul(xj, int(ln[3 * j]), yi, int(ln[3 * i + 1]), r, t1, t2)
+    negate(r, n2)
+    ln[12 + slot] = _compress(out, add(p, n1, r, n2, out))
 
 
 @njit(cache=True)
-def _zm(w, row, m, nm, sgn, out):
-    """out = sgn * z_row * m for an expansion m (at most 16 long); returns the length."""
+def _zm(w, row, slot, sgn, out):
+    """out = sgn * z_row * minor2[slot]; returns the length."""
     z = w[_D + 6 * row + 4:_D + 6 * row + 6]
     nz = int(w[_LEN + 3 * row + 2])
+    m = w[_M2 + 16 * slot:_M2 + 16 * slot + 16]
+    nm = int(w[_LEN + 12 + slot])
     n = mul(m, nm, z, nz, out, w[_T1:_T1 + 64], w[_T2:_T2 + 64])
     if sgn < 0:
         negate(out, n)
@@ -397,15 +416,16 @@ def _zm(w, row, m, nm, sgn, out):
 
 
 @njit(cache=True)
-def _minor3(w, i, mi, ni, si, j, mj, nj, sj, k, mk, nk, sk, out):
-    """out = z_i*(si*mi) + z_j*(sj*mj) + z_k*(sk*mk): a 3x3 minor; returns the length."""
+def _minor3(w, r, out):
+    """The 3x3 minor of row r of _TRIPLES into out, compressed; returns the length."""
+    t = _TRIPLES[r]
     p1 = w[_P1:_P1 + 64]
     p2 = w[_P2:_P2 + 64]
     p3 = w[_P3:_P3 + 64]
     q = w[_Q:_Q + 128]
-    n1 = _zm(w, i, mi, ni, si, p1)
-    n2 = _zm(w, j, mj, nj, sj, p2)
-    n3 = _zm(w, k, mk, nk, sk, p3)
+    n1 = _zm(w, t[0], t[1], t[2], p1)
+    n2 = _zm(w, t[3], t[4], t[5], p2)
+    n3 = _zm(w, t[6], t[7], t[8], p3)
     nq = add(p1, n1, p2, n2, q)
     return _compress(out, add(q, nq, p3, n3, out))
 
@@ -422,14 +442,12 @@ def _sign_estimate(e, n):
 @njit(cache=True)
 def _orient_expansion(w):
     """orient3d's determinant, exactly, from the differences in the workspace."""
-    m_bc = w[_M2:_M2 + 16]
-    m_ca = w[_M2 + 16:_M2 + 32]
-    m_ab = w[_M2 + 32:_M2 + 48]
-    n_bc = _minor2(w, 1, 2, m_bc)
-    n_ca = _minor2(w, 2, 0, m_ca)
-    n_ab = _minor2(w, 0, 1, m_ab)
+    for q in range(6, 9):
+        _minor2(w, q)
     out = w[_M3:_M3 + 192]
-    n = _minor3(w, 0, m_bc, n_bc, 1, 1, m_ca, n_ca, 1, 2, m_ab, n_ab, 1, out)
+    n = 0
+    for r in range(4, 5):        # (a loop index: not a literal, see _PAIRS)
+        n = _minor3(w, r, out)
     return _sign_estimate(out, n)
 
 
@@ -466,29 +484,10 @@ def orient3d_exact_stage(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz, w):
 def _insphere_expansion(w):
     """insphere's determinant, exactly, from the differences in the workspace."""
     ln = w[_LEN:_LEN + 26]
-    # 2x2 minors (x, y columns) of the rows a=0, b=1, c=2, d=3
-    ab = w[_M2:_M2 + 16]
-    bc = w[_M2 + 16:_M2 + 32]
-    cd = w[_M2 + 32:_M2 + 48]
-    da = w[_M2 + 48:_M2 + 64]
-    ac = w[_M2 + 64:_M2 + 80]
-    bd = w[_M2 + 80:_M2 + 96]
-    nab = _minor2(w, 0, 1, ab)
-    nbc = _minor2(w, 1, 2, bc)
-    ncd = _minor2(w, 2, 3, cd)
-    nda = _minor2(w, 3, 0, da)
-    nac = _minor2(w, 0, 2, ac)
-    nbd = _minor2(w, 1, 3, bd)
-    # 3x3 minors: abc = az*bc - bz*ac + cz*ab, bcd = bz*cd - cz*bd + dz*bc,
-    #             cda = cz*da + dz*ac + az*cd, dab = dz*ab + az*bd + bz*da
-    m_abc = w[_M3:_M3 + 192]
-    m_bcd = w[_M3 + 192:_M3 + 384]
-    m_cda = w[_M3 + 384:_M3 + 576]
-    m_dab = w[_M3 + 576:_M3 + 768]
-    ln[18] = _minor3(w, 0, bc, nbc, 1, 1, ac, nac, -1, 2, ab, nab, 1, m_abc)
-    ln[19] = _minor3(w, 1, cd, ncd, 1, 2, bd, nbd, -1, 3, bc, nbc, 1, m_bcd)
-    ln[20] = _minor3(w, 2, da, nda, 1, 3, ac, nac, 1, 0, cd, ncd, 1, m_cda)
-    ln[21] = _minor3(w, 3, ab, nab, 1, 0, bd, nbd, 1, 1, da, nda, 1, m_dab)
+    for q in range(6):           # 2x2 minors ab, bc, cd, da, ac, bd (x, y columns)
+        _minor2(w, q)
+    for r in range(4):           # 3x3 minors abc, bcd, cda, dab
+        ln[18 + r] = _minor3(w, r, w[_M3 + 192 * r:_M3 + 192 * r + 192])
     # lifts |row|^2
     sq = w[_P1:_P1 + 8]
     s2 = w[_P2:_P2 + 24]
