@@ -58,7 +58,7 @@ _BITS = 16          # Hilbert curve resolution per axis: 48-bit keys
 
 # ----------------------------------------------------------------------------- insertion order
 @njit(cache=True)
-def hilbert_index_3d(ix, iy, iz, bits):
+def hilbert_index_3d(ix: int, iy: int, iz: int, bits: int) -> int:
     """Position of the cell (ix, iy, iz) along a 3D Hilbert curve over a 2**bits grid
     (Skilling's transpose algorithm, "Programming the Hilbert curve", 2004).
 
@@ -230,7 +230,7 @@ def _flat_duplicates(coords: np.ndarray) -> np.ndarray:
     return dup
 
 
-def representatives(dup: np.ndarray, order: np.ndarray) -> np.ndarray:
+def _representatives(dup: np.ndarray, order: np.ndarray) -> np.ndarray:
     """rep[internal vertex] = smallest input index among the points equal to it."""
     n = len(order)
     root = np.where(dup[:n] >= 0, dup[:n], np.arange(n))
@@ -256,7 +256,7 @@ class Delaunay3D:
         self._points = as_points(points, dim=3)
         self._order = insertion_order_3d(self._points)
         self._mesh = _Mesh(self._points[self._order])
-        self._rep = representatives(self._mesh.dup, self._order)
+        self._rep = _representatives(self._mesh.dup, self._order)
         if self._mesh.flat:
             self._simp = np.zeros((0, 4), dtype=np.int64)
             self._neig = np.zeros((0, 4), dtype=np.int64)

@@ -41,7 +41,7 @@ from __future__ import annotations
 import numpy as np
 
 from . import _mesh3d as K
-from .delaunay3d import _Mesh, insertion_order_3d, representatives
+from .delaunay3d import _Mesh, _representatives, insertion_order_3d
 from .points import as_points
 from .predicates3d import orient3d_batch
 
@@ -118,7 +118,7 @@ class SphericalDelaunay:
         mesh = _Mesh(np.vstack([np.zeros((1, 3)), self.xyz[order]]))   # the centre first
         dup = mesh.dup[1:n + 1]
         dup = np.where(dup > 0, dup - 1, -1)
-        rep = representatives(dup, order)
+        rep = _representatives(dup, order)
         self._order, self._rep = order, rep
         if mesh.flat:
             self._tri = np.zeros((0, 3), dtype=np.int64)
