@@ -360,6 +360,12 @@ def test_arrays_grow_when_needed():
     assert check_delaunay_3d(curve, delaunay_3d(curve))[0]
 
 
+def test_kernel_face_table_matches_the_predicates():
+    from reference_impl import _mesh3d
+    from reference_impl.predicates3d import FACES
+    assert _mesh3d._F.tolist() == [list(f) for f in FACES]
+
+
 def test_hilbert_curve_is_continuous():
     bits = 3
     cells = list(itertools.product(range(8), repeat=3))
