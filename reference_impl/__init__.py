@@ -21,10 +21,13 @@ from .bowyer_watson import Step, bowyer_watson, dry_run  # noqa: E402
 from .clearance import max_clearance  # noqa: E402
 from .constrained import ConstrainedDelaunay, constrained_delaunay  # noqa: E402
 from .delaunay import Delaunay  # noqa: E402
+from .delaunay3d import Delaunay3D, delaunay_3d  # noqa: E402
 from .empty_circle import largest_empty_circle  # noqa: E402
 from .hull import convex_hull  # noqa: E402
 from .navmesh import NavMesh, PolygonTriangulation, funnel, polygon_triangulation, shortest_path  # noqa: E402
 from .predicates import incircle, orient2d  # noqa: E402
+from .predicates3d import insphere, orient3d  # noqa: E402
+from .spherical import SphericalDelaunay, lonlat_to_xyz, spherical_delaunay  # noqa: E402
 from .voronoi import voronoi  # noqa: E402
 
 __all__ = [
@@ -32,4 +35,6 @@ __all__ = [
     "ConstrainedDelaunay", "constrained_delaunay",
     "NavMesh", "PolygonTriangulation", "funnel", "polygon_triangulation", "shortest_path",
     "convex_hull", "voronoi", "largest_empty_circle", "max_clearance",
+    "orient3d", "insphere", "Delaunay3D", "delaunay_3d",
+    "SphericalDelaunay", "spherical_delaunay", "lonlat_to_xyz",
 ]
