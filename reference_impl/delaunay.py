@@ -15,121 +15,230 @@ three distinct points is not an error; NaN, infinity, a wrong shape or text
 raise ``ValueError``.  The result is the same set of triangles whatever the
 input order, degenerate inputs included.
 
+Updates: ``insert(p)`` adds a point (its index is the next row of ``points``),
+``remove(i)`` deletes point i in time proportional to its number of neighbours
+(Devillers' setting: delete the star, re-triangulate the hole; see ``_mesh.py``).
+Indices never change: ``points`` keeps every row, removed ones included, and a
+removed index appears in no output (``index_map[i] == -1``, ``live[i]`` False).
+After updates the triangulation is Delaunay for the live points; where
+cocircular ties allow several answers it may pick another valid one than a
+fresh ``Delaunay(points[live])`` would.
+
 >>> d = Delaunay([(0, 0), (2, 0), (0, 2), (2, 2), (1, 1)])
 >>> len(d.simplices), sorted(d.hull.tolist())
 (4, [0, 1, 2, 3])
 >>> int(d.find_simplex((0.5, 1.0))) >= 0, int(d.find_simplex((5.0, 5.0)))
 (True, -1)
+>>> d.remove(4); len(d.simplices), d.vertex_neighbors(0).tolist()
+(2, [1, 2, 3])
 """
 from __future__ import annotations
+
+import math
+import numbers
 
 import numpy as np
 
 from . import _mesh
 from .ordering import insertion_order
 from .points import as_point, as_points
-from .predicates import workspace
+from .predicates import orient2d_nb, workspace
 
 __all__ = ["Delaunay"]
 
 _ITYPE = np.int32  # mesh arrays: half the memory traffic of int64
 
 
-def _equal_point_roots(x: np.ndarray, y: np.ndarray) -> np.ndarray:
-    """dup[i] = first index with the same coordinates as i (in sorted order), or -1."""
-    dup = np.full(len(x), -1, dtype=np.int64)
-    if len(x) == 0:
-        return dup
-    order = np.lexsort((y, x))
-    same = (x[order][1:] == x[order][:-1]) & (y[order][1:] == y[order][:-1])
-    start = np.maximum.accumulate(np.where(np.r_[True, ~same], np.arange(len(x)), 0))
-    root = order[start]
-    dup[order] = np.where(root == order, -1, root)
-    return dup
+def _grown(a: np.ndarray, size: int, fill) -> np.ndarray:
+    """``a`` copied into a new array of length ``size`` (>= len(a)), the rest ``fill``."""
+    out = np.empty((size,) + a.shape[1:], dtype=a.dtype)
+    out[:len(a)] = a
+    out[len(a):] = fill
+    return out
+
+
+def _plain(v) -> bool:
+    """A finite Python float, or an int that converts to float exactly (fast-path check)."""
+    t = type(v)
+    return (t is float and math.isfinite(v)) or (t is int and -2 ** 53 <= v <= 2 ** 53)
 
 
 class Delaunay:
     """Delaunay triangulation of 2D points (exact predicates, O(n log n) expected).
 
-    Attributes: ``points``, ``simplices``, ``neighbors``, ``hull``, ``index_map``.
-    Methods: ``find_simplex(p)``, ``insert(p)``, ``edges()``, ``vertex_neighbors(i)``.
+    Attributes: ``points``, ``simplices``, ``neighbors``, ``hull``, ``index_map``, ``live``.
+    Methods: ``find_simplex(p)``, ``insert(p)``, ``remove(i)``, ``edges()``,
+    ``vertex_neighbors(i)``.
+
+    >>> d = Delaunay([(0, 0), (1, 0), (0, 1)])
+    >>> d.insert((1, 1)), d.vertex_neighbors(3).tolist()
+    (3, [1, 2])
     """
 
+    # how often ``remove`` fell back to a rebuild after a failed sanity check (never expected)
+    fallbacks = 0
+
     def __init__(self, points) -> None:
-        self._points = as_points(points)
+        pts = as_points(points)
+        # Input rows live in a growable buffer: ``insert`` appends in amortised O(1).
+        self._pts = pts
+        self._npts = len(pts)
+        self._removed = np.zeros(len(pts), dtype=bool)   # per input index
+        self._nremoved = 0
         self._build()
 
     # ------------------------------------------------------------------ building
     def _alloc(self, nverts: int, ntris: int) -> None:
+        self._alloc_vertices(nverts)
+        self._alloc_triangles(ntris)
+
+    def _alloc_vertices(self, nverts: int) -> None:
         self._cap_v = nverts
-        self._cap_t = ntris
         self._P = np.empty((nverts, 2))                  # coordinates in insertion order
+        self._start_of = np.empty(nverts + 1, dtype=_ITYPE)
+
+    def _alloc_triangles(self, ntris: int) -> None:
+        self._cap_t = ntris
         self._M = np.zeros(_mesh.RECORD * ntris, dtype=_ITYPE)   # the mesh: see _mesh.py
         self._stack = np.empty(ntris, dtype=_ITYPE)
         self._bad = np.empty(ntris, dtype=_ITYPE)
         self._ba = np.empty(ntris, dtype=_ITYPE)
         self._bb = np.empty(ntris, dtype=_ITYPE)
         self._bo = np.empty(ntris, dtype=_ITYPE)
-        self._start_of = np.empty(nverts + 1, dtype=_ITYPE)
 
     def _build(self) -> None:
-        pts = self._points
-        n = len(pts)
-        self._order = insertion_order(pts)               # internal vertex i = input point order[i]
+        """Triangulate the live input points from scratch."""
+        pts = self.points
+        if self._nremoved:
+            live = np.flatnonzero(~self._removed[:self._npts])
+            order = live[insertion_order(pts[live])]
+        else:
+            order = insertion_order(pts)
+        n = len(order)
         self._alloc(max(n, 4), 2 * n + 8)
-        self._P[:n] = pts[self._order]
+        # internal vertex u = input point order[u]
+        self._order = order if n >= 4 else _grown(order.astype(np.int64), 4, -1)
+        self._P[:n] = pts[order]
         self._n = n
         self._state = np.zeros(_mesh.STATE_SIZE, dtype=np.int64)
-        self._dup = np.full(max(n, 1), -1, dtype=np.int64)
+        self._dup = np.full(max(n, 4), -1, dtype=np.int64)   # internal u duplicates vertex dup[u]
+        self._dead = np.zeros(max(n, 4), dtype=bool)         # internal u was removed
         self._w = workspace()
         self._flat = n < 3 or not _mesh.build(
             self._P[:n], self._M, self._stack, self._bad,
             self._ba, self._bb, self._bo, self._start_of, self._state, self._dup, self._w)
         if self._flat:
-            self._dup[:n] = _equal_point_roots(self._P[:n, 0], self._P[:n, 1])
+            self._dup[:n] = -1     # (flat results are computed from the coordinates)
+        # Bookkeeping for updates, made on the first remove() / vertex_neighbors():
+        # _internal (input -> internal), _label (site -> smallest live input index),
+        # _copies (site -> its live internal duplicates), _free (internal ids of removed
+        # points that are in no triangle: reused by insert), the vertex -> triangle map.
+        self._dyn = False
+        self._line = None          # flat: two distinct live internal vertices (or None)
         self._cache = {}
 
-    def _grow(self) -> None:
-        """Double the capacity, keeping the mesh (used by ``insert``)."""
-        old = (self._P, self._M, self._dup)
+    def _grow_vertices(self) -> None:
+        """Double the room for internal vertices (used by ``insert``)."""
+        old_P, old_start = self._P, self._start_of
+        n, cap = self._n, 2 * self._cap_v
+        self._alloc_vertices(cap)
+        self._P[:n] = old_P[:n]
+        self._start_of[:len(old_start)] = old_start      # the vertex -> triangle map
+        self._order = _grown(self._order[:n], cap, -1)
+        self._dup = _grown(self._dup[:n], cap, -1)
+        self._dead = _grown(self._dead[:n], cap, False)
+        if self._dyn and not self._flat:
+            self._label = _grown(self._label[:n], cap, -1)
+            self._pos = np.empty(cap + 1, dtype=np.int64)
+
+    def _grow_triangles(self) -> None:
+        """Double the room for triangles, keeping the mesh (used by ``insert``)."""
+        old_M = self._M
         nt = self._state[_mesh.S_NTRI]
-        self._alloc(2 * self._cap_v, 2 * self._cap_t)
-        self._P[:self._n] = old[0][:self._n]
-        self._M[:_mesh.RECORD * nt] = old[1][:_mesh.RECORD * nt]
-        self._dup = np.concatenate([old[2], np.full(len(old[2]), -1, dtype=np.int64)])
+        self._alloc_triangles(2 * self._cap_t)
+        self._M[:_mesh.RECORD * nt] = old_M[:_mesh.RECORD * nt]
+
+    def _append_point(self, q: np.ndarray) -> int:
+        """Append an input row (amortised O(1)); return its index."""
+        idx = self._npts
+        if idx == len(self._pts):
+            cap = max(8, 2 * idx)
+            self._pts = _grown(self._pts, cap, 0.0)
+            self._removed = _grown(self._removed, cap, False)
+            if self._dyn:
+                self._internal = _grown(self._internal, cap, -1)
+        self._pts[idx] = q
+        self._removed[idx] = False
+        self._npts = idx + 1
+        return idx
+
+    def _ensure_dynamic(self) -> None:
+        """Make the bookkeeping that ``remove`` and ``vertex_neighbors`` need (O(n), once)."""
+        if self._dyn:
+            return
+        n = self._n
+        self._internal = np.full(len(self._pts), -1, dtype=np.int64)
+        self._internal[self._order[:n]] = np.arange(n)
+        if not self._flat:
+            cap = self._cap_v
+            self._label = np.full(cap, -1, dtype=np.int64)
+            self._label[:n] = _mesh.smallest_labels(self._order[:n], self._dup[:n])
+            self._copies = {}                              # only sites with duplicates
+            for u in np.flatnonzero(self._dup[:n] >= 0).tolist():
+                r = int(self._dup[u])
+                self._copies.setdefault(r, [r]).append(u)
+            self._pos = np.empty(cap + 1, dtype=np.int64)
+            self._free = []                                # internal ids no longer in use
+            _mesh.init_vertex_map(self._M, int(self._state[_mesh.S_NTRI]), self._start_of)
+        self._dyn = True
 
     # ------------------------------------------------------------------ results
     def _result(self):
         if "simplices" not in self._cache:
-            rep = self._representatives()
             if self._flat:
-                simp = np.zeros((0, 3), dtype=np.int64)
-                neig = np.zeros((0, 3), dtype=np.int64)
-                hull = self._collinear_chain(rep)
-                out_of = np.zeros(0, dtype=np.int64)
+                self._cache.update(self._flat_result())
             else:
+                n = self._n
+                if self._dyn:
+                    labels = self._label[:n]
+                    site = np.where(self._dup[:n] < 0, np.arange(n), self._dup[:n])
+                    rep = np.where(self._dead[:n], -1, labels[site])
+                else:
+                    rep = labels = self._representatives()
                 nt = int(self._state[_mesh.S_NTRI])
-                simp, neig, out_of = _mesh.extract(self._M, nt, rep)
-                hull = _mesh.hull_cycle(self._M, nt, self._n, rep)
-            self._cache.update(simplices=simp, neighbors=neig, hull=hull, out_of=out_of, rep=rep)
+                simp, neig, out_of = _mesh.extract(self._M, nt, labels)
+                hull = _mesh.hull_cycle(self._M, nt, n, labels)
+                self._cache.update(simplices=simp, neighbors=neig, hull=hull, out_of=out_of, rep=rep)
         return self._cache
+
+    def _flat_result(self) -> dict:
+        """No triangles: the distinct live points sorted (the chain along their line)."""
+        n = self._n
+        alive = np.flatnonzero(~self._dead[:n])
+        x, y, idx = self._P[alive, 0], self._P[alive, 1], self._order[alive]
+        k = np.lexsort((idx, y, x))           # along the line; equal points: smallest index first
+        xs, ys = x[k], y[k]
+        new = np.r_[True, (xs[1:] != xs[:-1]) | (ys[1:] != ys[:-1])] if len(k) else np.zeros(0, bool)
+        chain = idx[k][new]
+        rep = np.full(n, -1, dtype=np.int64)
+        rep[alive[k]] = chain[np.cumsum(new) - 1]
+        empty = np.zeros((0, 3), dtype=np.int64)
+        return dict(simplices=empty, neighbors=empty.copy(), hull=chain,
+                    out_of=np.zeros(0, dtype=np.int64), rep=rep)
 
     def _representatives(self) -> np.ndarray:
         """rep[internal vertex] = smallest input index among the points equal to it."""
         return _mesh.smallest_labels(self._order[:self._n], self._dup[:self._n])
 
-    def _collinear_chain(self, rep: np.ndarray) -> np.ndarray:
-        n = self._n
-        if n == 0:
-            return np.zeros(0, dtype=np.int64)
-        internal = np.flatnonzero(self._dup[:n] < 0)      # distinct points
-        keys = np.lexsort((self._P[internal, 1], self._P[internal, 0]))
-        return rep[internal[keys]]
-
     @property
     def points(self) -> np.ndarray:
-        """The input points, (n, 2) float64 (inserted points appended)."""
-        return self._points
+        """The input points, (n, 2) float64: inserted points appended, removed ones kept."""
+        return self._pts[:self._npts]
+
+    @property
+    def live(self) -> np.ndarray:
+        """(n,) bool: ``live[i]`` is False once point i has been removed."""
+        return ~self._removed[:self._npts]
 
     @property
     def simplices(self) -> np.ndarray:
@@ -149,9 +258,10 @@ class Delaunay:
 
     @property
     def index_map(self) -> np.ndarray:
-        """``index_map[i]``: the index point i was merged into (i itself unless a duplicate)."""
+        """``index_map[i]``: the index point i was merged into, the smallest live index with
+        the same coordinates (i itself unless a duplicate); -1 if point i was removed."""
         rep = self._result()["rep"]
-        out = np.empty(self._n, dtype=np.int64)
+        out = np.full(self._npts, -1, dtype=np.int64)
         out[self._order[:self._n]] = rep
         return out
 
@@ -170,11 +280,39 @@ class Delaunay:
         e = np.sort(e, axis=1)
         return np.unique(e, axis=0) if len(e) else e.reshape(0, 2)
 
-    def vertex_neighbors(self, i: int) -> np.ndarray:
-        """Sorted indices of the points joined to point i by a Delaunay edge."""
-        e = self.edges()
-        i = int(self.index_map[i])
-        return np.sort(np.concatenate([e[e[:, 0] == i, 1], e[e[:, 1] == i, 0]]))
+    def vertex_neighbors(self, i: int, strict: bool = False) -> np.ndarray:
+        """Sorted indices of the points joined to point i by a Delaunay edge.
+
+        Each neighbouring location is named by its smallest live index (``index_map``);
+        a duplicate of i is not its neighbour.  O(degree): a walk around the vertex.
+        For collinear points: the one or two chain neighbours.
+
+        With ``strict`` only the edges of the *unique* Delaunay graph count: j is a
+        neighbour when some circle through i and j has every other point strictly outside
+        (their Voronoi cells share an edge of positive length).  This leaves out the
+        diagonals that triangulate cocircular points, so it does not depend on how ties
+        were broken.
+
+        >>> Delaunay([(0, 0), (3, 0), (1, 0), (2, 0)]).vertex_neighbors(2).tolist()
+        [0, 3]
+        >>> sq = Delaunay([(0, 0), (1, 0), (1, 1), (0, 1)])     # a square: one diagonal
+        >>> len(sq.vertex_neighbors(0)) + len(sq.vertex_neighbors(1)), sq.vertex_neighbors(0, strict=True).tolist()
+        (5, [1, 3])
+        """
+        i = self._check_live(i)
+        if self._flat:
+            chain = self.hull
+            k = int(np.flatnonzero(chain == self.index_map[i])[0])
+            return np.sort(chain[[j for j in (k - 1, k + 1) if 0 <= j < len(chain)]])
+        self._ensure_dynamic()
+        u = int(self._internal[i])
+        site = u if self._dup[u] < 0 else int(self._dup[u])
+        if strict:
+            ring = _mesh.strict_link(self._M, self._P, self._start_of, site, self._w)
+        else:
+            ring = _mesh.link(self._M, self._start_of, site)
+            ring = ring[ring >= 0]
+        return np.sort(self._label[ring])
 
     def find_simplex(self, p):
         """Index of a triangle containing p (on an edge: any incident one), -1 outside.
@@ -205,24 +343,130 @@ class Delaunay:
         >>> d.insert((1, 1)), len(d.simplices)
         (3, 2)
         """
-        q = as_point(p)
-        idx = self._n
-        self._points = np.vstack([self._points, q[None, :]])
-        if self._flat:
-            self._build()
-            return idx
-        if self._n + 1 > self._cap_v or self._state[_mesh.S_NTRI] + 2 > self._cap_t:
-            self._grow()
-        self._P[idx] = q
-        self._order = np.append(self._order, idx)
-        self._n += 1
-        if len(self._dup) < self._n:
-            self._dup = np.concatenate([self._dup, np.full(len(self._dup), -1, dtype=np.int64)])
-        self._dup[idx] = _mesh.insert(idx, self._P, self._M,
-                                      self._stack, self._bad, self._ba, self._bb, self._bo,
-                                      self._start_of, self._state, self._w)
+        if type(p) in (tuple, list) and len(p) == 2 and _plain(p[0]) and _plain(p[1]):
+            q = np.array((p[0] + 0.0, p[1] + 0.0))       # fast path for one plain pair
+        else:
+            q = as_point(p)
+        idx = self._append_point(q)
         self._cache = {}
+        if self._flat:
+            if not self._stays_flat(q):
+                self._build()             # the first point off the line: triangulate
+                return idx
+            if self._n + 1 > self._cap_v:
+                self._grow_vertices()
+            u = self._n
+            self._P[u] = q
+            self._order[u] = idx
+            self._dup[u] = -1
+            self._dead[u] = False
+            self._n += 1
+            if self._dyn:
+                self._internal[idx] = u
+            return idx
+        if self._state[_mesh.S_NTRI] + 2 > self._cap_t:
+            self._grow_triangles()
+        if self._dyn and self._free:
+            u = self._free.pop()          # the id of a vertex gone from the mesh
+            self._internal[self._order[u]] = -1
+        else:
+            if self._n + 1 > self._cap_v:
+                self._grow_vertices()
+            u = self._n
+            self._n += 1
+        self._P[u] = q
+        self._order[u] = idx
+        self._dead[u] = False
+        r = _mesh.insert(u, self._P, self._M,
+                         self._stack, self._bad, self._ba, self._bb, self._bo,
+                         self._start_of, self._state, self._w)
+        self._dup[u] = r
+        if self._dyn:
+            self._internal[idx] = u
+            if r < 0:
+                # insert() keeps start_of right for the old vertices; the new one is in
+                # the last triangle it made
+                self._start_of[u + 1] = self._state[_mesh.S_LAST]
+                self._label[u] = idx
+            else:
+                self._copies.setdefault(int(r), [int(r)]).append(u)   # label: idx is the largest
         return idx
 
+    def remove(self, i: int) -> None:
+        """Remove point i (an index into ``points``); the triangulation stays Delaunay.
+
+        Cost: proportional to the number of Delaunay neighbours of the point (its star is
+        deleted and the hole re-triangulated, see ``_mesh.py``); the first call also
+        makes an O(n) index.  Indices of other points do not change.  Duplicates: each
+        index is a point of its own; removing one copy of a location leaves the location
+        in the triangulation, now named by the smallest remaining index, and the location
+        goes away with its last copy.  If the remaining points are collinear (or fewer
+        than three), the triangulation becomes flat (no triangles; ``edges()`` is the
+        chain) and later inserts triangulate again.  Raises ``ValueError`` for an index
+        that is not an integer, out of range, or already removed.
+
+        >>> d = Delaunay([(0, 0), (4, 0), (0, 4), (4, 4), (1, 2)])
+        >>> d.remove(4); d.simplices.shape, int(d.index_map[4])
+        ((2, 3), -1)
+        >>> d.remove(4)
+        Traceback (most recent call last):
+        ...
+        ValueError: point 4 was already removed
+        """
+        i = self._check_live(i)
+        self._ensure_dynamic()
+        u = int(self._internal[i])
+        self._removed[i] = True
+        self._nremoved += 1
+        self._dead[u] = True
+        self._cache = {}
+        if self._flat:
+            if self._line is not None and u in self._line:
+                self._line = None
+            return
+        site = u if self._dup[u] < 0 else int(self._dup[u])
+        if site != u:
+            self._free.append(u)              # a duplicate is not in the mesh: reuse its id
+        group = self._copies.get(site)
+        if group is not None:                 # other copies of this location
+            group.remove(u)
+            if group:
+                self._label[site] = int(self._order[group].min())
+                return
+            del self._copies[site]
+        self._free.append(site)
+        code = _mesh.remove(site, self._P, self._M, self._stack, self._bad, self._ba, self._bb,
+                            self._bo, self._start_of, self._pos, self._state, self._w)
+        if code != _mesh.REMOVED:
+            if code == _mesh.FAILED:
+                type(self).fallbacks += 1
+            self._build()                     # flat now (or, never expected, a failed check)
+
+    def _check_live(self, i) -> int:
+        if isinstance(i, (bool, np.bool_)) or not isinstance(i, numbers.Integral):
+            raise ValueError(f"point index must be an integer, got {i!r}")
+        i = int(i)
+        if not 0 <= i < self._npts:
+            raise ValueError(f"point index {i} is out of range 0..{self._npts - 1}")
+        if self._removed[i]:
+            raise ValueError(f"point {i} was already removed")
+        return i
+
+    def _stays_flat(self, q: np.ndarray) -> bool:
+        """Flat mode: is q on the line of the live points (or are there fewer than two)?"""
+        if self._line is None:
+            n = self._n
+            alive = np.flatnonzero(~self._dead[:n])
+            if len(alive) == 0:
+                return True
+            P = self._P[alive]
+            other = np.flatnonzero((P[:, 0] != P[0, 0]) | (P[:, 1] != P[0, 1]))
+            if len(other) == 0:
+                return True
+            self._line = (int(alive[0]), int(alive[other[0]]))
+        a, b = self._line
+        P = self._P
+        return orient2d_nb(P[a, 0], P[a, 1], P[b, 0], P[b, 1], q[0], q[1], self._w) == 0
+
     def __repr__(self) -> str:
-        return f"Delaunay(n={len(self._points)}, triangles={len(self.simplices)})"
+        return f"Delaunay(n={self._npts - self._nremoved}, triangles={len(self.simplices)})"
