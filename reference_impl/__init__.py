@@ -1,5 +1,8 @@
 """reference_impl: the course's robust geometry library (answer key and teaching code).
 
+Note: ``reference_impl.voronoi`` is the function (the module is
+``importlib.import_module("reference_impl.voronoi")``), as with scipy's names.
+
 Every geometric decision uses exact predicates, so degenerate input (grids,
 cocircular or collinear points, duplicates, coordinates from 1e-300 to 1e300)
 gives exact answers.  Points are (n, 2) float64 arrays; triangles are (m, 3)
@@ -22,6 +25,7 @@ from .clearance import max_clearance  # noqa: E402
 from .constrained import ConstrainedDelaunay, constrained_delaunay  # noqa: E402
 from .delaunay import Delaunay  # noqa: E402
 from .delaunay3d import Delaunay3D, delaunay_3d  # noqa: E402
+from .dynamic import DynamicNetwork  # noqa: E402
 from .empty_circle import largest_empty_circle  # noqa: E402
 from .hull import convex_hull  # noqa: E402
 from .navmesh import NavMesh, PolygonTriangulation, funnel, polygon_triangulation, shortest_path  # noqa: E402
@@ -36,5 +40,5 @@ __all__ = [
     "NavMesh", "PolygonTriangulation", "funnel", "polygon_triangulation", "shortest_path",
     "convex_hull", "voronoi", "largest_empty_circle", "max_clearance",
     "orient3d", "insphere", "Delaunay3D", "delaunay_3d",
-    "SphericalDelaunay", "spherical_delaunay", "lonlat_to_xyz",
+    "SphericalDelaunay", "spherical_delaunay", "lonlat_to_xyz", "DynamicNetwork",
 ]

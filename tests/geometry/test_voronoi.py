@@ -27,7 +27,8 @@ import shapely
 from hypothesis import given, strategies as st
 from scipy.spatial import Voronoi
 
-import reference_impl.voronoi as voronoi_module
+import importlib
+voronoi_module = importlib.import_module("reference_impl.voronoi")
 from pointsets import degenerate_sets, flat_sets, nearly_collinear_hull
 from reference_impl.verify import exact_coordinates
 from reference_impl.voronoi import voronoi
