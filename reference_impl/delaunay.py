@@ -39,7 +39,7 @@ import numbers
 
 import numpy as np
 
-from . import _mesh
+from . import _mesh, _mesh_remove
 from .ordering import insertion_order
 from .points import as_point, as_points
 from .predicates import orient2d_nb, workspace
@@ -189,7 +189,7 @@ class Delaunay:
                 self._copies.setdefault(r, [r]).append(u)
             self._pos = np.empty(cap + 1, dtype=np.int64)
             self._free = []                                # internal ids no longer in use
-            _mesh.init_vertex_map(self._M, int(self._state[_mesh.S_NTRI]), self._start_of)
+            _mesh_remove.init_vertex_map(self._M, int(self._state[_mesh.S_NTRI]), self._start_of)
         self._dyn = True
 
     # ------------------------------------------------------------------ results
@@ -275,10 +275,17 @@ class Delaunay:
             chain = self.hull
             e = np.stack([chain[:-1], chain[1:]], axis=1) if len(chain) > 1 else np.zeros((0, 2), np.int64)
         else:
-            s = self.simplices
-            e = np.concatenate([s[:, [0, 1]], s[:, [1, 2]], s[:, [2, 0]]])
+            # each undirected edge once: from the triangle with the larger index (or the
+            # only triangle, on the hull); the edge opposite vertex k is (k+1, k+2)
+            s, nb = self.simplices, self.neighbors
+            t = np.arange(len(s))[:, None]
+            keep = (nb < t) | (nb == -1)
+            e = np.stack([s[:, [1, 2, 0]][keep], s[:, [2, 0, 1]][keep]], axis=1)
         e = np.sort(e, axis=1)
-        return np.unique(e, axis=0) if len(e) else e.reshape(0, 2)
+        if len(e) == 0:
+            return e.reshape(0, 2)
+        e = e[np.lexsort((e[:, 1], e[:, 0]))]
+        return e[np.r_[True, (e[1:] != e[:-1]).any(axis=1)]]   # merged duplicates can repeat
 
     def vertex_neighbors(self, i: int, strict: bool = False) -> np.ndarray:
         """Sorted indices of the points joined to point i by a Delaunay edge.
@@ -308,9 +315,9 @@ class Delaunay:
         u = int(self._internal[i])
         site = u if self._dup[u] < 0 else int(self._dup[u])
         if strict:
-            ring = _mesh.strict_link(self._M, self._P, self._start_of, site, self._w)
+            ring = _mesh_remove.strict_link(self._M, self._P, self._start_of, site, self._w)
         else:
-            ring = _mesh.link(self._M, self._start_of, site)
+            ring = _mesh_remove.link(self._M, self._start_of, site)
             ring = ring[ring >= 0]
         return np.sort(self._label[ring])
 
@@ -435,10 +442,10 @@ class Delaunay:
                 return
             del self._copies[site]
         self._free.append(site)
-        code = _mesh.remove(site, self._P, self._M, self._stack, self._bad, self._ba, self._bb,
+        code = _mesh_remove.remove(site, self._P, self._M, self._stack, self._bad, self._ba, self._bb,
                             self._bo, self._start_of, self._pos, self._state, self._w)
-        if code != _mesh.REMOVED:
-            if code == _mesh.FAILED:
+        if code != _mesh_remove.REMOVED:
+            if code == _mesh_remove.FAILED:
                 type(self).fallbacks += 1
             self._build()                     # flat now (or, never expected, a failed check)
 
