@@ -282,7 +282,7 @@ def build(P, M, stack, bad, ba, bb, bo, start_of, state, dup, w):
 
 @njit(cache=True)
 def extract(M, ntri, label):
-    """Compact the real triangles: returns (simplices, neighbors, internal->output map).
+    """Compact the real triangles: returns (simplices, internal->output map).
 
     Vertex v is written as ``label[v]`` (the input index it stands for)."""
     out_of = np.empty(ntri, dtype=np.int64)
@@ -294,16 +294,24 @@ def extract(M, ntri, label):
         else:
             out_of[t] = -1
     simp = np.empty((m, 3), dtype=np.int64)
+    for t in range(ntri):
+        r = out_of[t]
+        if r >= 0:
+            for k in range(3):
+                simp[r, k] = label[M[8 * t + k]]
+    return simp, out_of
+
+
+@njit(cache=True)
+def extract_neighbors(M, ntri, out_of, m):
+    """(m, 3) neighbours of the compacted triangles (-1 across the hull)."""
     neig = np.empty((m, 3), dtype=np.int64)
     for t in range(ntri):
         r = out_of[t]
-        if r < 0:
-            continue
-        for k in range(3):
-            simp[r, k] = label[M[8 * t + k]]
-            o = M[8 * t + 3 + k]
-            neig[r, k] = out_of[o]
-    return simp, neig, out_of
+        if r >= 0:
+            for k in range(3):
+                neig[r, k] = out_of[M[8 * t + 3 + k]]
+    return neig
 
 
 @njit(cache=True)

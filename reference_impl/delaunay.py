@@ -206,10 +206,20 @@ class Delaunay:
                 else:
                     rep = labels = self._representatives()
                 nt = int(self._state[_mesh.S_NTRI])
-                simp, neig, out_of = _mesh.extract(self._M, nt, labels)
-                hull = _mesh.hull_cycle(self._M, nt, n, labels)
-                self._cache.update(simplices=simp, neighbors=neig, hull=hull, out_of=out_of, rep=rep)
+                simp, out_of = _mesh.extract(self._M, nt, labels)
+                self._cache.update(simplices=simp, out_of=out_of, rep=rep, labels=labels)
         return self._cache
+
+    def _lazy(self, key: str) -> np.ndarray:
+        """neighbors and hull are computed on first use (building needs neither)."""
+        cache = self._result()
+        if key not in cache:
+            nt = int(self._state[_mesh.S_NTRI])
+            if key == "neighbors":
+                cache[key] = _mesh.extract_neighbors(self._M, nt, cache["out_of"], len(cache["simplices"]))
+            else:
+                cache[key] = _mesh.hull_cycle(self._M, nt, self._n, cache["labels"])
+        return cache[key]
 
     def _flat_result(self) -> dict:
         """No triangles: the distinct live points sorted (the chain along their line)."""
@@ -228,7 +238,8 @@ class Delaunay:
 
     def _representatives(self) -> np.ndarray:
         """rep[internal vertex] = smallest input index among the points equal to it."""
-        return _mesh.smallest_labels(self._order[:self._n], self._dup[:self._n])
+        order, dup = self._order[:self._n], self._dup[:self._n]
+        return _mesh.smallest_labels(order, dup) if (dup >= 0).any() else order
 
     @property
     def points(self) -> np.ndarray:
@@ -248,13 +259,13 @@ class Delaunay:
     @property
     def neighbors(self) -> np.ndarray:
         """(m, 3): ``neighbors[t, k]`` is the triangle opposite vertex k of t, -1 on the hull."""
-        return self._result()["neighbors"]
+        return self._lazy("neighbors")
 
     @property
     def hull(self) -> np.ndarray:
         """Convex hull vertices, counter-clockwise (collinear hull points included),
         starting at the smallest index.  For all-collinear input: the points in sorted order."""
-        return self._result()["hull"]
+        return self._lazy("hull")
 
     @property
     def index_map(self) -> np.ndarray:
