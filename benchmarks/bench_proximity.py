@@ -4,18 +4,21 @@
     python benchmarks/bench_proximity.py --sizes 100000 --repeat 5
     python benchmarks/bench_proximity.py --quick          # 1e4 only, best of 1
 
-For uniform random points (and, at the largest size, the integer grid and points
-on a circle, where every length decision is a tie or a near-tie and the exact
-paths run), prints the best-of-k wall time of
+For uniform random points (and, at the largest size, the integer grid, where
+every length decision is a tie and the exact paths run), prints the best-of-k
+wall time of
 
 * ``euclidean_mst``   vs scipy.spatial.Delaunay + scipy.sparse.csgraph.minimum_spanning_tree
 * ``closest_pair``    vs scipy.spatial.cKDTree(p).query(p, k=2) and an argmin
 * ``gabriel_graph``   vs scipy Delaunay edges + a vectorised float apex test (not exact)
 * ``relative_neighborhood_graph`` vs scipy.spatial.Delaunay alone (there is no library RNG)
 * ``lawson_flip``     from Triangle's constrained triangulation of an x-monotone polyline
-                      (far from Delaunay) vs Triangle's own Delaunay triangulation
+                      (far from Delaunay: about n^1.5 flips) vs Triangle's own Delaunay
 
-and the ratio ours / anchor (below 1.0 means ours is faster).  Runs are
+and the ratio ours / anchor (below 1.0 means ours is faster).  Points on a
+circle (all near-ties) are timed against our own function on uniform points of
+the same size, the cost of the exact paths: Qhull is quadratic on cocircular
+input (85 s for 30,000 points here), so scipy is no anchor there.  Runs are
 interleaved (ours, anchor, ours, ...) so machine noise hits both sides; numba
 compilation is done before timing.
 """
@@ -102,6 +105,14 @@ def best_pair(ours, anchor, repeat):
 
 
 def rows_for(name, p, repeat, with_flips=True):
+    if name.startswith("circle"):
+        u = np.random.default_rng(0).random(p.shape)
+        cases = [(label, lambda f=f: f(p), "same on uniform", lambda f=f: f(u))
+                 for label, f in (("euclidean_mst", euclidean_mst), ("closest_pair", closest_pair),
+                                  ("gabriel_graph", gabriel_graph),
+                                  ("relative_neighborhood", relative_neighborhood_graph))]
+        cases[1] = ("closest_pair", lambda: closest_pair(p), "cKDTree query k=2", lambda: kdtree_closest(p))
+        return _print_rows(name, cases, repeat)
     cases = [
         ("euclidean_mst", lambda: euclidean_mst(p), "scipy Delaunay+csgraph MST", lambda: scipy_mst(p)),
         ("closest_pair", lambda: closest_pair(p), "cKDTree query k=2", lambda: kdtree_closest(p)),
@@ -111,8 +122,13 @@ def rows_for(name, p, repeat, with_flips=True):
     ]
     if with_flips:
         start = constrained_start(p)
-        cases.append(("lawson_flip (from CDT)", lambda: lawson_flip(p, start), "Triangle Delaunay",
+        n_flips = len(lawson_flip(p, start)[1])
+        cases.append((f"lawson {n_flips:,} flips", lambda: lawson_flip(p, start), "Triangle Delaunay",
                       lambda: triangle_delaunay(p)))
+    _print_rows(name, cases, repeat)
+
+
+def _print_rows(name, cases, repeat):
     for label, ours, anchor_label, anchor in cases:
         a, b = best_pair(ours, anchor, repeat)
         print(f"{name:<16} | {label:<23} | {a:8.3f} | {anchor_label:<27} | {b:8.3f} | {a / b:6.2f}",

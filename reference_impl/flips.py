@@ -109,7 +109,17 @@ def _neighbours(T: np.ndarray, n: int) -> tuple[np.ndarray, np.ndarray]:
     return nbr, keys.reshape(m, 3)
 
 
+def _canonical(T: np.ndarray) -> np.ndarray:
+    """Rotate each triangle to start at its smallest index, then sort the rows."""
+    if len(T) == 0:
+        return T.reshape(0, 3)
+    r = np.argmin(T, axis=1)
+    T = np.stack([T[np.arange(len(T)), (r + k) % 3] for k in range(3)], axis=1)
+    return T[np.lexsort((T[:, 2], T[:, 1], T[:, 0]))]
+
+
 def _validate(P: np.ndarray, triangles) -> tuple[np.ndarray, np.ndarray, Delaunay]:
+    """(triangles in canonical order, their neighbours, the Delaunay of P) or ValueError."""
     n = len(P)
     T = _as_triangles(triangles, n)
     d = Delaunay(P)
@@ -125,6 +135,7 @@ def _validate(P: np.ndarray, triangles) -> tuple[np.ndarray, np.ndarray, Delauna
         what = "degenerate (zero area)" if s == 0 else "clockwise"
         raise ValueError(f"triangle {t} = {T[t].tolist()} is {what}; triangles must be "
                          "counter-clockwise with positive area")
+    T = _canonical(T)
     nbr, keys = _neighbours(T, n)
     hull = np.asarray(d.hull, dtype=np.int64)
     hull_keys = np.sort(hull * n + np.roll(hull, -1))
@@ -145,7 +156,8 @@ def _validate(P: np.ndarray, triangles) -> tuple[np.ndarray, np.ndarray, Delauna
 
 
 def validate_triangulation(points, triangles) -> np.ndarray:
-    """Check that ``triangles`` triangulate ``points``; return them as (m, 3) int64.
+    """Check that ``triangles`` triangulate ``points``; return them as (m, 3) int64 in a
+    canonical order (each rotated to start at its smallest index, rows sorted).
 
     Conditions (sufficient, see ``reference_impl.verify``): every triangle strictly
     counter-clockwise; no directed edge used twice; the edges with a triangle on
@@ -240,15 +252,6 @@ def _lawson(X, Y, tri, nbr):
     return flips[:nf]
 
 
-def _canonical(T: np.ndarray) -> np.ndarray:
-    """Rotate each triangle to start at its smallest index, then sort the rows."""
-    if len(T) == 0:
-        return T.reshape(0, 3)
-    r = np.argmin(T, axis=1)
-    T = np.stack([T[np.arange(len(T)), (r + k) % 3] for k in range(3)], axis=1)
-    return T[np.lexsort((T[:, 2], T[:, 1], T[:, 0]))]
-
-
 def lawson_flip(points, triangles) -> tuple[np.ndarray, list[tuple[int, int]]]:
     """Lawson's algorithm: (final Delaunay triangles, flipped edges in order).
 
@@ -265,11 +268,9 @@ def lawson_flip(points, triangles) -> tuple[np.ndarray, list[tuple[int, int]]]:
     [(1, 3)]
     """
     P = as_points(points)
-    T, _, _ = _validate(P, triangles)
-    T = _canonical(T)
+    T, nbr, _ = _validate(P, triangles)
     if len(T) == 0:
         return T, []
-    nbr, _ = _neighbours(T, len(P))
     flips = _lawson(P[:, 0].copy(), P[:, 1].copy(), T, nbr)
     return _canonical(T), [(int(a), int(b)) for a, b in flips]
 
@@ -339,8 +340,6 @@ def apply_flips(points, triangles, flips, only_illegal: bool = True) -> np.ndarr
     """
     P = as_points(points)
     T, nbr, d = _validate(P, triangles)
-    T = _canonical(T)
-    nbr, _ = _neighbours(T, len(P))
     try:
         F = np.asarray(flips, dtype=np.int64).reshape(-1, 2) if len(flips) else np.zeros((0, 2), np.int64)
     except (ValueError, TypeError) as exc:

@@ -95,30 +95,19 @@ def _products_exact(v, w):
             return s
     for i in range(16):
         v[i] = math.ldexp(v[i], k)
-    d1 = w[0:2]
-    d2 = w[2:4]
-    prod = w[8:16]
-    t1 = w[16:24]
-    t2 = w[24:32]
-    acc = w[32:64]
-    acc2 = w[64:96]
-    nacc = 0
-    for term in range(4):
+    d1, d2, prod, t1, t2 = w[0:2], w[2:4], w[8:16], w[16:24], w[24:32]
+    acc, acc2 = w[32:64], w[64:96]
+    acc[0] = 0.0
+    nacc = 1
+    for term in range(4):          # acc += +-(v[o] - v[o+1]) * (v[o+2] - v[o+3])
         o = 4 * term
         n1 = diff(v[o], v[o + 1], d1)
         n2 = diff(v[o + 2], v[o + 3], d2)
         np_ = mul(d1, n1, d2, n2, prod, t1, t2)
         if term >= 2:
             negate(prod, np_)
-        if nacc == 0:
-            for i in range(np_):
-                acc[i] = prod[i]
-            nacc = np_
-        else:
-            nn = add(acc, nacc, prod, np_, acc2)
-            for i in range(nn):
-                acc[i] = acc2[i]
-            nacc = nn
+        nacc = add(acc, nacc, prod, np_, acc2)
+        acc[:nacc] = acc2[:nacc]
     top = acc[nacc - 1]
     return 1 if top > 0.0 else (-1 if top < 0.0 else 0)
 
@@ -243,12 +232,8 @@ def _length_expansions(X, Y, u, v, rows, E, L):
     Exact only if no product underflows: the caller guarantees every non-zero
     coordinate is at least 2**-450 in magnitude (and every one below 1).
     """
-    d1 = np.empty(2)
-    d2 = np.empty(2)
-    s1 = np.empty(8)
-    s2 = np.empty(8)
-    t1 = np.empty(8)
-    t2 = np.empty(8)
+    d1, d2 = np.empty(2), np.empty(2)
+    s1, s2, t1, t2 = np.empty(8), np.empty(8), np.empty(8), np.empty(8)
     for i in rows:
         n1 = diff(X[u[i]], X[v[i]], d1)
         n2 = diff(Y[u[i]], Y[v[i]], d2)

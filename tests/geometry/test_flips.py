@@ -14,7 +14,6 @@ an exact angle comparison (squared cosines as Fractions).
 """
 from __future__ import annotations
 
-import itertools
 import math
 from fractions import Fraction
 

@@ -25,7 +25,6 @@ from hypothesis import given, settings, strategies as st
 
 import pointsets
 from reference_impl import Delaunay
-from reference_impl.predicates import workspace
 from reference_impl.proximity import (closest_pair, dot_sign, euclidean_mst, gabriel_graph,
                                       relative_neighborhood_graph, sq_dist_cmp)
 from reference_impl.verify import exact_coordinates
