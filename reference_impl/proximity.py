@@ -112,6 +112,28 @@ def _products_exact(v, w):
     return 1 if top > 0.0 else (-1 if top < 0.0 else 0)
 
 
+@njit(cache=True, inline="always")
+def _clean_diff(a, b):
+    """a - b is computed exactly and its products cannot underflow or overflow."""
+    x, e = two_diff(a, b)
+    return e == 0.0 and (x == 0.0 or 2.0 ** -450 <= abs(x) < 2.0 ** 500)
+
+
+@njit(cache=True)
+def _sign_if_exact(x1, x2, y1, y2, x3, x4, y3, y4):
+    """Sign of x1 x2 + y1 y2 - x3 x4 - y3 y4 if no operation rounds (ties on grids), else 2."""
+    p1, e1 = two_product(x1, x2)
+    p2, e2 = two_product(y1, y2)
+    p3, e3 = two_product(x3, x4)
+    p4, e4 = two_product(y3, y4)
+    s1, f1 = two_sum(p1, p2)
+    s2, f2 = two_sum(p3, p4)
+    d, f3 = two_diff(s1, s2)
+    if e1 == 0.0 and e2 == 0.0 and e3 == 0.0 and e4 == 0.0 and f1 == 0.0 and f2 == 0.0 and f3 == 0.0:
+        return 1 if d > 0.0 else (-1 if d < 0.0 else 0)
+    return 2
+
+
 @njit(cache=True)
 def sq_dist_cmp(ax, ay, bx, by, cx, cy, dx, dy, w):
     """Exact sign of |a - b|^2 - |c - d|^2 (``w`` is scratch from ``_scratch()``)."""
@@ -129,6 +151,10 @@ def sq_dist_cmp(ax, ay, bx, by, cx, cy, dx, dy, w):
             return 1
         if -det > err:
             return -1
+    if _clean_diff(ax, bx) and _clean_diff(ay, by) and _clean_diff(cx, dx) and _clean_diff(cy, dy):
+        s = _sign_if_exact(x1, x1, y1, y1, x2, x2, y2, y2)
+        if s != 2:
+            return s
     v = w[_SCRATCH - 16:]
     v[0] = ax; v[1] = bx; v[2] = ax; v[3] = bx
     v[4] = ay; v[5] = by; v[6] = ay; v[7] = by
@@ -154,6 +180,10 @@ def dot_sign(px, py, qx, qy, rx, ry, w):
             return 1
         if -det > err:
             return -1
+    if _clean_diff(px, rx) and _clean_diff(py, ry) and _clean_diff(qx, rx) and _clean_diff(qy, ry):
+        s = _sign_if_exact(x1, x2, y1, y2, 0.0, 0.0, 0.0, 0.0)
+        if s != 2:
+            return s
     v = w[_SCRATCH - 16:]
     v[0] = px; v[1] = rx; v[2] = qx; v[3] = rx
     v[4] = py; v[5] = ry; v[6] = qy; v[7] = ry
@@ -293,53 +323,13 @@ def _merge_sort(seg, buf, X, Y, u, v, key, err, E, L, w):
 
 @njit(cache=True)
 def _sort_runs(X, Y, u, v, key, err, E, L, order, starts, ends):
-    """Sort each run order[starts[r]:ends[r]] by exact length; return "equal to the previous".
-
-    With expansions E, a run is first sorted by a refined key: the leading
-    component of (length^2 - base), base being one float key of the run, with
-    the other components as its error bound.  Only the sub-runs whose refined
-    intervals still overlap go through the exact merge sort.
-    """
+    """Merge-sort each run order[starts[r]:ends[r]] by exact length; return, per position,
+    whether the edge there is exactly as long as the one before it in the same run."""
     w = _scratch()
-    longest = 0
-    for r in range(len(starts)):
-        longest = max(longest, ends[r] - starts[r])
-    buf = np.empty(longest, dtype=order.dtype)
-    k2 = np.empty(longest)
-    e2 = np.empty(longest)
-    base = np.empty(1)
-    for r in range(len(starts)):
-        seg = order[starts[r]:ends[r]]
-        n = len(seg)
-        if len(L) == 0:
-            _merge_sort(seg, buf, X, Y, u, v, key, err, E, L, w)
-            continue
-        base[0] = -key[seg[0]]
-        for i in range(n):
-            nd = add(E[seg[i]], L[seg[i]], base, 1, w[:32])
-            k2[i] = w[nd - 1]
-            tail = 0.0
-            for c in range(nd - 1):
-                tail += abs(w[c])
-            e2[i] = tail * (1.0 + 2.0 ** -40)
-        perm = np.argsort(k2[:n], kind="mergesort")
-        seg[:] = seg[perm].copy()
-        lo_k = k2[:n][perm] - e2[:n][perm]
-        hi_k = k2[:n][perm] + e2[:n][perm]
-        sufmin = lo_k.copy()
-        for i in range(n - 2, -1, -1):
-            sufmin[i] = min(sufmin[i], sufmin[i + 1])
-        start = 0
-        pmax = hi_k[0]
-        for i in range(1, n + 1):
-            if i == n or pmax < sufmin[i]:
-                if i - start > 1:
-                    _merge_sort(seg[start:i], buf, X, Y, u, v, key, err, E, L, w)
-                start = i
-            if i < n:
-                pmax = max(pmax, hi_k[i])
+    buf = np.empty(max(1, np.max(ends - starts)), dtype=order.dtype)
     same = np.zeros(len(order), dtype=np.bool_)
     for r in range(len(starts)):
+        _merge_sort(order[starts[r]:ends[r]], buf, X, Y, u, v, key, err, E, L, w)
         for i in range(starts[r] + 1, ends[r]):
             same[i] = _length_cmp(X, Y, u, v, key, err, E, L, order[i - 1], order[i], w) == 0
     return same
@@ -600,12 +590,9 @@ def _rng_mask(X, Y, u, v, a1, a2, indptr, indices):
             continue
         seen_p[p] = seen_p[q] = i      # q is on the boundary of p's disc, not inside: skip
         seen_q[q] = seen_q[p] = i      # the exact (tie) evaluation of |pq| against itself
-        stack_p[0] = p
-        stack_q[0] = q
-        st_p[0] = 1
-        st_p[1] = st_p[2] = 0
-        st_q[0] = 1
-        st_q[1] = st_q[2] = 0
+        stack_p[0], stack_q[0] = p, q
+        st_p[0], st_p[1], st_p[2] = 1, 0, 0       # one vertex (p) on the stack, no neighbour pending
+        st_q[0], st_q[1], st_q[2] = 1, 0, 0
         while True:
             r = _disc_step(X, Y, indptr, indices, stack_p, st_p, seen_p, i, p, q, w)
             if r == 0:
