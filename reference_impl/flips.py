@@ -53,26 +53,27 @@ def _workspace():
     return np.empty(WORKSPACE_SIZE, dtype=np.float64)
 
 
-def _as_triangles(triangles, n: int) -> np.ndarray:
-    """(m, 3) int64 array of vertex indices in 0..n-1, or ValueError naming the problem."""
-    if isinstance(triangles, (str, bytes)):
-        raise ValueError("triangles must be an (m, 3) array of point indices, got text")
+def _as_index_rows(rows, n: int, width: int = 3, what: str = "triangle") -> np.ndarray:
+    """(m, width) int64 array of point indices in 0..n-1, or ValueError naming the problem."""
+    kind = f"an (m, {width}) array of point indices"
+    if isinstance(rows, (str, bytes)):
+        raise ValueError(f"{what}s must be {kind}, got text")
     try:
-        T = np.asarray(triangles)
+        T = np.asarray(rows)
     except (ValueError, TypeError) as exc:
-        raise ValueError(f"triangles must be an (m, 3) array of point indices: {exc}") from None
+        raise ValueError(f"{what}s must be {kind}: {exc}") from None
     if T.size == 0:
-        return np.zeros((0, 3), dtype=np.int64)
-    if T.ndim != 2 or T.shape[1] != 3:
-        raise ValueError(f"triangles must have shape (m, 3), got {T.shape}")
+        return np.zeros((0, width), dtype=np.int64)
+    if T.ndim != 2 or T.shape[1] != width:
+        raise ValueError(f"{what}s must have shape (m, {width}), got {T.shape}")
     if T.dtype.kind == "f" and np.isfinite(T).all() and (T == np.round(T)).all():
         T = T.astype(np.int64)
     if T.dtype.kind not in "iu":
-        raise ValueError(f"triangles must contain integer point indices, got dtype {T.dtype}")
+        raise ValueError(f"{what}s must contain integer point indices, got dtype {T.dtype}")
     T = T.astype(np.int64)
     bad = np.flatnonzero(((T < 0) | (T >= n)).any(axis=1))
     if len(bad):
-        raise ValueError(f"triangle {bad[0]} = {T[bad[0]].tolist()} has an index outside 0..{n - 1}")
+        raise ValueError(f"{what} {bad[0]} = {T[bad[0]].tolist()} has an index outside 0..{n - 1}")
     return T
 
 
@@ -121,7 +122,7 @@ def _canonical(T: np.ndarray) -> np.ndarray:
 def _validate(P: np.ndarray, triangles) -> tuple[np.ndarray, np.ndarray, Delaunay]:
     """(triangles in canonical order, their neighbours, the Delaunay of P) or ValueError."""
     n = len(P)
-    T = _as_triangles(triangles, n)
+    T = _as_index_rows(triangles, n)
     d = Delaunay(P)
     rep = d.index_map
     T = rep[T]
@@ -340,19 +341,12 @@ def apply_flips(points, triangles, flips, only_illegal: bool = True) -> np.ndarr
     """
     P = as_points(points)
     T, nbr, d = _validate(P, triangles)
-    try:
-        F = np.asarray(flips, dtype=np.int64).reshape(-1, 2) if len(flips) else np.zeros((0, 2), np.int64)
-    except (ValueError, TypeError) as exc:
-        raise ValueError(f"flips must be a sequence of (i, j) index pairs: {exc}") from None
+    F = d.index_map[_as_index_rows(flips, len(P), width=2, what="flip")]
     if len(F) and len(T) == 0:
         raise ValueError("flip 0: there is no triangle, so no edge can be flipped")
-    if len(F) and ((F < 0) | (F >= len(P))).any():
-        s = int(np.flatnonzero(((F < 0) | (F >= len(P))).any(axis=1))[0])
-        raise ValueError(f"flip {s} = {F[s].tolist()} has an index outside 0..{len(P) - 1}")
-    F = d.index_map[F] if len(F) else F
     vt = np.full(len(P), -1, dtype=np.int64)
     vt[T.ravel()] = np.repeat(np.arange(len(T)), 3)
-    bad = np.flatnonzero(vt[F.ravel()] < 0) if len(F) else []
+    bad = np.flatnonzero(vt[F.ravel()] < 0)
     if len(bad):
         s = int(bad[0] // 2)
         raise ValueError(f"flip {s} = {F[s].tolist()} is not an edge of the triangulation")
@@ -371,7 +365,7 @@ def apply_flips(points, triangles, flips, only_illegal: bool = True) -> np.ndarr
 def _mesh(points, triangles) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Validated points, triangles (strictly CCW, manifold) and boundary-edge vertex mask."""
     P = as_points(points)
-    T = _as_triangles(triangles, len(P))
+    T = _as_index_rows(triangles, len(P))
     t, s = _first_non_ccw(P[:, 0].copy(), P[:, 1].copy(), T)
     if t >= 0:
         what = "degenerate (zero area)" if s == 0 else "clockwise"

@@ -295,6 +295,10 @@ def test_apply_flips_matches_the_replay_and_rejects_bad_flips():
         apply_flips(pts, tris, flips[:1] + [flips[0]])          # the removed edge is gone
     with pytest.raises(ValueError, match="outside"):
         apply_flips(pts, tris, [(0, 99)])
+    with pytest.raises(ValueError, match="integer"):
+        apply_flips(pts, tris, [(0.5, 1)])
+    with pytest.raises(ValueError, match="shape"):
+        apply_flips(pts, tris, [(0, 1, 2)])
 
 
 # ----------------------------------------------------------------------------- max-min angle
