@@ -153,7 +153,7 @@ def extra_degenerate_sets() -> list[tuple[str, np.ndarray]]:
     return [
         ("mixed-1e300-1e-300", np.array([(1e300, 0.0), (0.0, 0.0), (1e-300, 0.0), (0.0, 1e-300),
                                          (-1e300, 5e299), (3e-300, 2e-300), (0.0, -1e300)])),
-        ("circle-300", pointsets.circle(300)),
+        ("circle-160", pointsets.circle(160)),
         ("rotated-grid-15", pointsets.rotated_grid(15, 0.3)),
         ("two-scales", np.vstack([pointsets.grid(5) * 1e-9, pointsets.grid(5) + 10.0])),
         ("square", np.array([(0, 0), (1, 0), (1, 1), (0, 1)], dtype=float)),
