@@ -27,10 +27,14 @@ from .delaunay import Delaunay  # noqa: E402
 from .delaunay3d import Delaunay3D, delaunay_3d  # noqa: E402
 from .dynamic import DynamicNetwork  # noqa: E402
 from .empty_circle import largest_empty_circle  # noqa: E402
+from .flips import (apply_flips, flip_to_delaunay, laplacian_smooth, lawson_flip,  # noqa: E402
+                    mesh_quality, validate_triangulation)
 from .hull import convex_hull  # noqa: E402
 from .navmesh import NavMesh, PolygonTriangulation, funnel, polygon_triangulation, shortest_path  # noqa: E402
 from .predicates import incircle, orient2d  # noqa: E402
 from .predicates3d import insphere, orient3d  # noqa: E402
+from .proximity import (closest_pair, euclidean_mst, gabriel_graph,  # noqa: E402
+                        relative_neighborhood_graph)
 from .spherical import SphericalDelaunay, lonlat_to_xyz, spherical_delaunay  # noqa: E402
 from .voronoi import voronoi  # noqa: E402
 
@@ -41,4 +45,7 @@ __all__ = [
     "convex_hull", "voronoi", "largest_empty_circle", "max_clearance",
     "orient3d", "insphere", "Delaunay3D", "delaunay_3d",
     "SphericalDelaunay", "spherical_delaunay", "lonlat_to_xyz", "DynamicNetwork",
+    "euclidean_mst", "closest_pair", "gabriel_graph", "relative_neighborhood_graph",
+    "validate_triangulation", "lawson_flip", "flip_to_delaunay", "apply_flips",
+    "laplacian_smooth", "mesh_quality",
 ]
