@@ -44,7 +44,7 @@ from numba import njit
 from numpy.typing import ArrayLike
 
 from .delaunay import Delaunay
-from .points import as_points
+from .points import as_index_rows, as_points
 from .predicates import incircle_nb, orient2d_nb, workspace
 
 __all__ = ["ConstrainedDelaunay", "constrained_delaunay"]
@@ -369,26 +369,7 @@ def insert_segments(tri, nbr, cid, vt, X, Y, seg, through, err, w):
 # ----------------------------------------------------------------------------- python API
 def _as_segments(segments, n: int) -> np.ndarray:
     """Validate segments: an (k, 2) array of integer point indices in 0..n-1."""
-    if isinstance(segments, (str, bytes)):
-        raise ValueError(f"segments must be (k, 2) point indices, got text {segments[:40]!r}")
-    try:
-        raw = np.asarray(segments)
-    except (ValueError, TypeError) as exc:
-        raise ValueError(f"segments must be a (k, 2) array of point indices: {exc}") from None
-    if raw.size == 0:
-        return np.zeros((0, 2), dtype=np.int64)
-    if raw.ndim != 2 or raw.shape[1] != 2:
-        raise ValueError(f"segments must have shape (k, 2), got {raw.shape}")
-    if raw.dtype.kind == "O" and all(isinstance(v, (int, np.integer)) and not isinstance(v, bool)
-                                     for v in raw.ravel()):
-        raw = raw.astype(np.int64)
-    if raw.dtype.kind not in "iu":
-        raise ValueError(f"segments must contain integer point indices, got dtype {raw.dtype}")
-    seg = raw.astype(np.int64)
-    bad = np.flatnonzero(((seg < 0) | (seg >= n)).any(axis=1))
-    if len(bad):
-        raise ValueError(f"segments[{bad[0]}] = {seg[bad[0]].tolist()} has an index outside 0..{n - 1}")
-    return seg
+    return as_index_rows(segments, n, 2, "segments")
 
 
 class _Kernel(NamedTuple):

@@ -39,7 +39,7 @@ import numpy as np
 from numba import njit
 
 from .delaunay import Delaunay
-from .points import as_points
+from .points import as_index_rows, as_points
 from .predicates import WORKSPACE_SIZE, incircle_nb, orient2d_nb
 
 __all__ = ["validate_triangulation", "lawson_flip", "flip_to_delaunay", "apply_flips",
@@ -55,26 +55,7 @@ def _workspace():
 
 def _as_index_rows(rows, n: int, width: int = 3, what: str = "triangle") -> np.ndarray:
     """(m, width) int64 array of point indices in 0..n-1, or ValueError naming the problem."""
-    kind = f"an (m, {width}) array of point indices"
-    if isinstance(rows, (str, bytes)):
-        raise ValueError(f"{what}s must be {kind}, got text")
-    try:
-        T = np.asarray(rows)
-    except (ValueError, TypeError) as exc:
-        raise ValueError(f"{what}s must be {kind}: {exc}") from None
-    if T.size == 0:
-        return np.zeros((0, width), dtype=np.int64)
-    if T.ndim != 2 or T.shape[1] != width:
-        raise ValueError(f"{what}s must have shape (m, {width}), got {T.shape}")
-    if T.dtype.kind == "f" and np.isfinite(T).all() and (T == np.round(T)).all():
-        T = T.astype(np.int64)
-    if T.dtype.kind not in "iu":
-        raise ValueError(f"{what}s must contain integer point indices, got dtype {T.dtype}")
-    T = T.astype(np.int64)
-    bad = np.flatnonzero(((T < 0) | (T >= n)).any(axis=1))
-    if len(bad):
-        raise ValueError(f"{what} {bad[0]} = {T[bad[0]].tolist()} has an index outside 0..{n - 1}")
-    return T
+    return as_index_rows(rows, n, width, f"{what}s", allow_integral_floats=True)
 
 
 @njit(cache=True)

@@ -17,7 +17,7 @@ import numbers
 
 import numpy as np
 
-__all__ = ["as_points", "as_point"]
+__all__ = ["as_points", "as_point", "as_index_rows"]
 
 
 def as_points(points, name: str = "points", dim: int = 2) -> np.ndarray:
@@ -61,3 +61,42 @@ def as_point(p, name: str = "point", dim: int = 2) -> np.ndarray:
     [1.0, 2.0]
     """
     return as_points([p] if np.ndim(p) == 1 else p, name=name, dim=dim).reshape(dim)
+
+
+def as_index_rows(rows, n: int, width: int, name: str, allow_integral_floats: bool = False) -> np.ndarray:
+    """Validate rows of point indices (triangles, segments, flips): an (m, width) int64 array.
+
+    Every index must lie in 0..n-1.  Integer dtypes and Python ints are accepted; floats
+    only when ``allow_integral_floats`` and every value is a whole number (JSON input).
+
+    >>> as_index_rows([(0, 1), (1, 2)], 3, 2, "segments").tolist()
+    [[0, 1], [1, 2]]
+    >>> as_index_rows([(0, 3)], 3, 2, "segments")
+    Traceback (most recent call last):
+    ...
+    ValueError: segments[0] = [0, 3] has an index outside 0..2
+    """
+    kind = f"an (m, {width}) array of point indices"
+    if isinstance(rows, (str, bytes)):
+        raise ValueError(f"{name} must be {kind}, got text {rows[:40]!r}")
+    try:
+        raw = np.asarray(rows)
+    except (ValueError, TypeError) as exc:
+        raise ValueError(f"{name} must be {kind}: {exc}") from None
+    if raw.size == 0:
+        return np.zeros((0, width), dtype=np.int64)
+    if raw.ndim != 2 or raw.shape[1] != width:
+        raise ValueError(f"{name} must have shape (m, {width}), got {raw.shape}")
+    if raw.dtype.kind == "O" and all(isinstance(v, (int, np.integer)) and not isinstance(v, bool)
+                                     for v in raw.ravel()):
+        raw = raw.astype(np.int64)
+    if (allow_integral_floats and raw.dtype.kind == "f" and np.isfinite(raw).all()
+            and (raw == np.round(raw)).all()):
+        raw = raw.astype(np.int64)
+    if raw.dtype.kind not in "iu":
+        raise ValueError(f"{name} must contain integer point indices, got dtype {raw.dtype}")
+    idx = raw.astype(np.int64)
+    bad = np.flatnonzero(((idx < 0) | (idx >= n)).any(axis=1))
+    if len(bad):
+        raise ValueError(f"{name}[{bad[0]}] = {idx[bad[0]].tolist()} has an index outside 0..{n - 1}")
+    return idx
