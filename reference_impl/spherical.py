@@ -105,7 +105,12 @@ class SphericalDelaunay:
 
     Attributes: ``xyz`` (the unit vectors used), ``simplices`` (m, 3) counter-clockwise
     seen from outside, ``neighbors`` (m, 3) (across the edge opposite vertex k, -1 on the
-    boundary of a hemisphere set), ``index_map``, ``covers_sphere``.
+    boundary of a hemisphere set), ``index_map``, ``covers_sphere``, ``missing``.
+
+    Known limitation: the triangles are the exact convex hull of the *rounded* unit
+    vectors.  Points closer than about 1e-5 degrees to their neighbours (centimetres on
+    the Earth) can round to a vector strictly inside the hull of the others; such a point
+    cannot be a vertex, and it is listed in ``missing`` instead of being dropped silently.
 
     >>> SphericalDelaunay([(1, 0, 0), (0, 1, 0), (0, 0, 1), (-1, -1, -1)]).simplices.shape
     (4, 3)
@@ -141,6 +146,18 @@ class SphericalDelaunay:
     def covers_sphere(self) -> bool:
         """True when the triangles cover the whole sphere (the centre is inside the hull)."""
         return self._covers
+
+    @property
+    def missing(self) -> np.ndarray:
+        """Sorted indices of distinct points that are in no triangle (see the class note).
+
+        Empty unless points nearly coincide, or the input is flat (one great circle).
+
+        >>> SphericalDelaunay([(1, 0, 0), (0, 1, 0), (0, 0, 1), (-1, -1, -1)]).missing.tolist()
+        []
+        """
+        reps = np.unique(self._rep)
+        return np.setdiff1d(reps, self._tri.ravel()) if len(self._tri) else reps
 
     @property
     def index_map(self) -> np.ndarray:

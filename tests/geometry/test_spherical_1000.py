@@ -262,3 +262,15 @@ def test_nearly_coincident_points_are_vertices(pts):
     sd = SphericalDelaunay(pts)
     used = set(sd.simplices.ravel().tolist())
     assert used == set(sd.index_map.tolist()), f"points {sorted(set(sd.index_map.tolist()) - used)} in no triangle"
+
+
+def test_points_that_cannot_be_vertices_are_reported_not_dropped_silently():
+    """The known limitation above, made visible: every distinct point is in a triangle or in
+    ``missing``."""
+    for pts in (_ll([(10.00000027, 20.00000045), (10.00000039, 20.00000047), (10.00000091, 20.00000001),
+                     (10.00000007, 20.00000042)]), CLUSTER_1E6):
+        sd = SphericalDelaunay(pts)
+        used = set(sd.simplices.ravel().tolist())
+        missing = set(sd.missing.tolist())
+        assert missing and not (missing & used)
+        assert used | missing == set(sd.index_map.tolist())
