@@ -176,7 +176,9 @@ class Sandbox:
 
     def _make_plan(self) -> _Plan:
         hide = [h for h in self._hidden if not any(h != o and _under(h, o) for o in self._hidden)]
-        roots = [r for r in python_roots() if any(_under(r, h) for h in hide)]
+        # the interpreter may live under a hidden path or under /tmp (a checkout cloned there):
+        # either way it is bound back into the child's view
+        roots = [r for r in python_roots() if any(_under(r, h) for h in [*hide, "/tmp"])]
         expose = [r for r in roots if not any(r != o and _under(r, o) for o in roots)]
         return _Plan(hide, expose, self.private_dir, self._cover, self.limits.disk_mb)
 
@@ -275,15 +277,22 @@ def _jail_filesystem(plan: _Plan, uid: int | None) -> None:
         staged.append(st)
     for h in plan.hide:
         _mount("tmpfs", h, "tmpfs", MS_NOSUID | MS_NODEV, "mode=755,size=1m")
+    # The child's private /tmp is prepared inside the staging area (which itself lives under
+    # the host's /tmp), so that exposed paths under /tmp can be moved into it first.
+    new_tmp = os.path.join(plan.staging, "tmp")
+    os.mkdir(new_tmp)
+    _mount("tmpfs", new_tmp, "tmpfs", MS_NOSUID | MS_NODEV, f"mode=1777,size={plan.disk_mb}m")
     for st, path in zip(staged, plan.expose):
-        os.makedirs(path, exist_ok=True)
-        _mount(st, path, None, MS_MOVE)
-    for c in plan.cover:
+        target = os.path.join(new_tmp, os.path.relpath(path, "/tmp")) if _under(path, "/tmp") else path
+        os.makedirs(target, exist_ok=True)
+        _mount(st, target, None, MS_MOVE)
+    _mount(new_tmp, "/tmp", None, MS_MOVE)
+    for c in plan.cover:  # after the move: a covered package may live under /tmp too
         if os.path.isdir(c):
             _mount("tmpfs", c, "tmpfs", MS_NOSUID | MS_NODEV, "mode=755,size=4k")
         else:
             _mount("/dev/null", c, None, MS_BIND)
-    for d in ("/tmp", "/dev/shm", "/var/tmp"):
+    for d in ("/dev/shm", "/var/tmp"):
         if os.path.isdir(d):
             _mount("tmpfs", d, "tmpfs", MS_NOSUID | MS_NODEV, f"mode=1777,size={plan.disk_mb}m")
     os.mkdir(JAIL_WORKDIR, 0o700)

@@ -1,6 +1,8 @@
 """The hostile corpus: every file in tests/grader/hostile/ states its expected verdict on its
 first line (``# expect: VERDICT``). Each must get exactly that verdict (never JE), leave no
-process behind, and leave the checkout unchanged.
+process behind, and leave the checkout unchanged.  In the corpus, the path ``/work/main``
+stands for "the checkout under test": it is replaced by the real path before judging, so the
+attacks aim at this checkout wherever it was cloned.
 
 Run: .venv/bin/python -m pytest tests/grader/test_hostile.py -q
 """
@@ -34,9 +36,18 @@ def checkout_guard():
     assert not (HERE.parent.parent / "pwned.txt").exists()
 
 
+def aimed_at_this_checkout(path: Path, tmp_path: Path) -> Path:
+    text = path.read_text()
+    if "/work/main" not in text:
+        return path
+    out = tmp_path / path.name
+    out.write_text(text.replace("/work/main", str(HERE.parent.parent)))
+    return out
+
+
 @pytest.mark.parametrize("path", CORPUS, ids=[p.stem for p in CORPUS])
-def test_hostile_submission_gets_its_verdict(path: Path, tiny_judge, checkout_guard):
-    result = tiny_judge.judge_path(path)
+def test_hostile_submission_gets_its_verdict(path: Path, tiny_judge, checkout_guard, tmp_path):
+    result = tiny_judge.judge_path(aimed_at_this_checkout(path, tmp_path))
     verdicts = [t.verdict for t in result.tests]
     assert Verdict.JE not in verdicts, [t.message for t in result.tests if t.verdict == Verdict.JE]
     assert result.verdict == expected(path), [(t.name, str(t.verdict), t.message[:200]) for t in result.tests]
