@@ -337,16 +337,18 @@ class Delaunay:
 
         ``p`` may be one point (returns an int) or an (k, 2) array (returns an array).
         """
-        q = np.asarray(p, dtype=float) if not isinstance(p, str) else p
-        single = np.ndim(q) == 1
+        try:
+            single = not isinstance(p, (str, bytes)) and np.ndim(p) == 1
+        except ValueError:  # ragged input: as_points names the problem
+            single = False
         qs = as_points([p] if single else p, name="p")
-        if self._flat:
-            res = np.full(len(qs), -1, dtype=np.int64)
-        else:
-            res = self._cache_out_of()[_mesh.find(self._M, self._P, qs,
-                                                  int(self._state[_mesh.S_LAST]), self._w,
-                                                  np.zeros(_mesh.STATE_SIZE, dtype=np.int64))]
-            res = np.where(res >= 0, res, -1)
+        res = np.full(len(qs), -1, dtype=np.int64)
+        if not self._flat and len(qs):
+            # many queries: answer them along a Hilbert curve, so each walk starts next door
+            order = insertion_order(qs, brio=False) if len(qs) > 64 else np.arange(len(qs))
+            found = _mesh.find(self._M, self._P, qs[order], int(self._state[_mesh.S_LAST]), self._w,
+                               np.zeros(_mesh.STATE_SIZE, dtype=np.int64))
+            res[order] = self._cache_out_of()[found]
         return int(res[0]) if single else res
 
     def _cache_out_of(self) -> np.ndarray:
