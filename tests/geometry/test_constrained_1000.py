@@ -26,32 +26,14 @@ import pytest
 import triangle
 
 import pointsets
+from exact_oracle import exact, incircle, orient
 from reference_impl.constrained import ConstrainedDelaunay, constrained_delaunay
 
 CASES = 1000
 
 
 # ----------------------------------------------------------------------------- exact arithmetic
-def exact(points) -> list[tuple[int, int]]:
-    """Every coordinate times one common power of two, as Python integers."""
-    ratios = [[float(v).as_integer_ratio() for v in p] for p in np.asarray(points, dtype=float).reshape(-1, 2)]
-    den = max([d for r in ratios for _, d in r], default=1)
-    return [tuple(n * (den // d) for n, d in r) for r in ratios]
 
-
-def orient(a, b, c) -> int:
-    d = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
-    return (d > 0) - (d < 0)
-
-
-def incircle(a, b, c, d) -> int:
-    """+1 when d is strictly inside the circle through counter-clockwise a, b, c."""
-    m = [(p[0] - d[0], p[1] - d[1]) for p in (a, b, c)]
-    l2 = [x * x + y * y for x, y in m]
-    det = (l2[0] * (m[1][0] * m[2][1] - m[2][0] * m[1][1])
-           - l2[1] * (m[0][0] * m[2][1] - m[2][0] * m[0][1])
-           + l2[2] * (m[0][0] * m[1][1] - m[1][0] * m[0][1]))
-    return (det > 0) - (det < 0)
 
 
 def strictly_between(P, a, b, k) -> bool:

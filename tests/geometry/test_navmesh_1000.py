@@ -36,35 +36,18 @@ import shapely
 import triangle
 from shapely.geometry import LinearRing, Point, Polygon
 
+from exact_oracle import exact, incircle, orient
 from reference_impl.navmesh import polygon_triangulation, shortest_path
 
 CASES = 1000
 
 
 # ----------------------------------------------------------------------------- exact helpers
-def exact(points) -> list[tuple[int, int]]:
-    """Every coordinate times one common power of two, as Python integers."""
-    ratios = [[float(v).as_integer_ratio() for v in p] for p in np.asarray(points, dtype=float).reshape(-1, 2)]
-    den = max([d for r in ratios for _, d in r], default=1)
-    return [tuple(n * (den // d) for n, d in r) for r in ratios]
-
-
-def orient(a, b, c) -> int:
-    d = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
-    return (d > 0) - (d < 0)
 
 
 def area2(P, ring) -> int:
     return sum(P[a][0] * P[b][1] - P[b][0] * P[a][1] for a, b in zip(ring, list(ring[1:]) + list(ring[:1])))
 
-
-def incircle(a, b, c, d) -> int:
-    m = [(p[0] - d[0], p[1] - d[1]) for p in (a, b, c)]
-    l2 = [x * x + y * y for x, y in m]
-    det = (l2[0] * (m[1][0] * m[2][1] - m[2][0] * m[1][1])
-           - l2[1] * (m[0][0] * m[2][1] - m[2][0] * m[0][1])
-           + l2[2] * (m[0][0] * m[1][1] - m[1][0] * m[0][1]))
-    return (det > 0) - (det < 0)
 
 
 def on_closed_segment(a, b, p) -> bool:
