@@ -249,9 +249,10 @@ CLUSTER_1E6 = np.vstack([np.c_[10 + _rng.random(8) * 1e-6, 20 + _rng.random(8) *
                          np.c_[_rng.uniform(-180, 180, 8), _rng.uniform(-80, 80, 8)]])
 
 
-@pytest.mark.xfail(strict=True, reason="bug: points about 1e-6 degrees apart (~10 cm on Earth) are silently "
-                   "left out of every triangle: their rounded unit vectors fall strictly inside the convex hull "
-                   "of the others, and SphericalDelaunay returns the exact hull of the stored vectors")
+@pytest.mark.xfail(strict=True, reason="known defect: points about 1e-6 degrees apart (~10 cm on Earth) are "
+                   "left out of every triangle (reported in SphericalDelaunay.missing): their rounded unit "
+                   "vectors fall strictly inside the convex hull of the others, and SphericalDelaunay returns "
+                   "the exact hull of the stored vectors")
 @pytest.mark.parametrize("pts", [
     # minimal: 4 distinct points in a tiny cap give 1 triangle; point 0 is in none
     _ll([(10.00000027, 20.00000045), (10.00000039, 20.00000047), (10.00000091, 20.00000001),
