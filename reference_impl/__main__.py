@@ -1,8 +1,9 @@
 """A headless tour of the course's library: ``python -m reference_impl demo``.
 
 It prints what a person would see in the first lessons (the tutorial's example,
-the failures the course fixes, the speed of the fast version next to scipy and
-Triangle) and writes a picture to ``build/demo.png``.
+the failures the course fixes, the speed of the fast version next to scipy) and
+writes a picture to ``build/demo.png``; then it judges an accepted and a wrong
+submission with the contest judge, as an instructor would.
 """
 from __future__ import annotations
 
@@ -72,6 +73,17 @@ def demo(out_dir: str = "build") -> None:
     ax.set_title("Delaunay triangulation of 200 random points")
     fig.savefig(out / "demo.png", dpi=100, bbox_inches="tight")
     print(f"\n4. Picture written to {out / 'demo.png'}")
+
+    root = Path(__file__).resolve().parent.parent
+    solutions = root / "solutions" / "delaunay"
+    if solutions.is_dir():
+        import subprocess
+        print("\n5. The judge (python -m grader judge delaunay FILE), sandboxed, on two submissions:")
+        for name in ("accepted_walk.py", "wrong_tutorial.py"):
+            run = subprocess.run([sys.executable, "-m", "grader", "judge", "delaunay", str(solutions / name)],
+                                 capture_output=True, text=True, cwd=root, timeout=600)
+            summary = [line for line in run.stdout.splitlines() if line.startswith("delaunay:")]
+            print(f"   {name}: {summary[0] if summary else run.stderr.strip()[-300:]}")
 
 
 def main(argv: list[str]) -> int:
