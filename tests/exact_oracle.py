@@ -31,3 +31,13 @@ def incircle(a, b, c, d) -> int:
            - l2[1] * (m[0][0] * m[2][1] - m[2][0] * m[0][1])
            + l2[2] * (m[0][0] * m[1][1] - m[1][0] * m[0][1]))
     return (det > 0) - (det < 0)
+
+
+def canon(tris) -> set[tuple[int, int, int]]:
+    """Triangles as a set, each rotated to start at its smallest index (orientation kept),
+    so that two triangulations compare equal whatever the order of rows and rotations."""
+    out = set()
+    for t in np.asarray(tris).reshape(-1, 3).tolist():
+        k = t.index(min(t))
+        out.add(tuple(t[k:] + t[:k]))
+    return out

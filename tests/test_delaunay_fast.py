@@ -20,16 +20,9 @@ import pointsets
 from reference_impl import Delaunay
 from reference_impl.verify import (check_delaunay, convex_hull_exact, exact_coordinates,
                                    orient_exact)
+from exact_oracle import canon
 
 ROOT = Path(__file__).resolve().parents[1]
-
-
-def canon(tris):
-    out = set()
-    for t in np.asarray(tris).reshape(-1, 3).tolist():
-        k = t.index(min(t))
-        out.add(tuple(t[k:] + t[:k]))
-    return out
 
 
 @pytest.mark.parametrize("name,pts", pointsets.degenerate_sets(), ids=lambda v: v if isinstance(v, str) else "")

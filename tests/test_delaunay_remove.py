@@ -19,14 +19,7 @@ import pointsets
 from reference_impl import Delaunay, _mesh
 from reference_impl.verify import (check_delaunay, convex_hull_exact, exact_coordinates,
                                    orient_exact)
-
-
-def canon(tris) -> set[tuple[int, int, int]]:
-    out = set()
-    for t in np.asarray(tris).reshape(-1, 3).tolist():
-        k = t.index(min(t))
-        out.add(tuple(t[k:] + t[:k]))
-    return out
+from exact_oracle import canon
 
 
 def smallest_equal(pts: np.ndarray, live: np.ndarray) -> np.ndarray:

@@ -21,6 +21,7 @@ from reference_impl import Delaunay
 from reference_impl.verify import (brute_force_empty_circles, check_delaunay,
                                    check_triangulation_size, convex_hull_exact,
                                    exact_coordinates)
+from exact_oracle import canon
 
 
 def fast(points):
@@ -34,15 +35,6 @@ def teaching(points):
 
 # (name, function, largest n it is asked to handle in these tests)
 IMPLS = [pytest.param(fast, 100_000, id="fast"), pytest.param(teaching, 400, id="teaching")]
-
-
-def canon(tris) -> set[tuple[int, int, int]]:
-    """Triangles as a set, each rotated to start at its smallest index (orientation kept)."""
-    out = set()
-    for t in np.asarray(tris).reshape(-1, 3).tolist():
-        k = t.index(min(t))
-        out.add(tuple(t[k:] + t[:k]))
-    return out
 
 
 def ccw(points, tris):

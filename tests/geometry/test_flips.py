@@ -27,6 +27,7 @@ from reference_impl import Delaunay
 from reference_impl.flips import (apply_flips, flip_to_delaunay, laplacian_smooth, lawson_flip,
                                   mesh_quality, validate_triangulation)
 from reference_impl.verify import check_delaunay, exact_coordinates, incircle_exact, orient_exact
+from exact_oracle import canon
 
 
 # ----------------------------------------------------------------------------- independent replay
@@ -88,14 +89,6 @@ def replay_checked(points, triangles, flips) -> set[tuple[int, int, int]]:
         assert m.illegal(i, j), f"flip {s} {(i, j)} was already locally Delaunay"
         m.flip(i, j)
     return m.triangles()
-
-
-def canon(tris) -> set[tuple[int, int, int]]:
-    out = set()
-    for t in np.asarray(tris).reshape(-1, 3).tolist():
-        k = t.index(min(t))
-        out.add(tuple(t[k:] + t[:k]))
-    return out
 
 
 # ----------------------------------------------------------------------------- starting triangulations
