@@ -67,13 +67,16 @@ def purge_stale_cache() -> list[str]:
         if not cached:
             return []
         dropped = []
+        source: dict[str, bytes] = {}  # each file read once
         for mod, deps in dependencies().items():
             if mod not in cached:
                 continue
             h = hashlib.sha1()
             for d in sorted(deps):
+                if d not in source:
+                    source[d] = (_PKG / f"{d}.py").read_bytes()
                 h.update(d.encode())
-                h.update((_PKG / f"{d}.py").read_bytes())
+                h.update(source[d])
             stamp = cache_dir / f"{mod}.deps.sha1"
             if stamp.exists() and stamp.read_text() == h.hexdigest():
                 continue
