@@ -27,7 +27,7 @@ from __future__ import annotations
 
 import os
 
-__all__ = ["StepPlayer", "PointPicker", "PredictReveal", "PredictRevealMany", "MeasurePanel",
+__all__ = ["StepPlayer", "PickAndStep", "PointPicker", "PredictReveal", "PredictRevealMany", "MeasurePanel",
            "quick_mode", "pick"]
 
 
@@ -51,5 +51,5 @@ def pick(quick, full):
 
 from .measure import MeasurePanel  # noqa: E402
 from .picker import PointPicker  # noqa: E402
-from .player import StepPlayer  # noqa: E402
+from .player import PickAndStep, StepPlayer  # noqa: E402
 from .quiz import PredictReveal, PredictRevealMany  # noqa: E402

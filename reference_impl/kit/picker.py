@@ -168,6 +168,7 @@ class PointPicker(KitWidget):
         self.clear_button.on_click(self.guard(lambda _: self.clear()))
         self._events = self._attach_events()
         self.triangles = np.zeros((0, 3), dtype=np.int64)
+        self._fit_view(self._points)
         self._refresh(notify=False)
 
     def _attach_events(self):
@@ -232,11 +233,15 @@ class PointPicker(KitWidget):
         value = self.presets[name]
         P = value(self.bounds, n or self.n) if callable(value) else value
         P = np.asarray(P, dtype=float).reshape(-1, 2)
+        self._fit_view(P)
+        self.set_points(P)
+
+    def _fit_view(self, P: np.ndarray) -> None:
+        """Widen the view to whole units around the points when some are outside it."""
         x0, y0, x1, y1 = self.bounds
         if len(P) and (P[:, 0].min() < x0 or P[:, 0].max() > x1 or P[:, 1].min() < y0 or P[:, 1].max() > y1):
             lo, hi = np.floor(P.min(axis=0)) - 1, np.ceil(P.max(axis=0)) + 1
             self.bounds = (float(lo[0]), float(lo[1]), float(hi[0]), float(hi[1]))
-        self.set_points(P)
 
     def _check_index(self, i: int) -> None:
         if not 0 <= int(i) < len(self._points):

@@ -41,7 +41,7 @@ from .render import (COLORS, Canvas, draw_circumcircle, draw_edges, draw_points,
                      filmstrip, fill_triangles, fit_bounds)
 from .widget import KitWidget
 
-__all__ = ["StepPlayer", "BWFrame", "FlipFrame", "BOWYER_WATSON_PSEUDOCODE", "LAWSON_PSEUDOCODE",
+__all__ = ["StepPlayer", "PickAndStep", "BWFrame", "FlipFrame", "BOWYER_WATSON_PSEUDOCODE", "LAWSON_PSEUDOCODE",
            "bowyer_watson_frames", "lawson_frames", "scrambled_triangulation"]
 
 BOWYER_WATSON_PSEUDOCODE = [
@@ -408,3 +408,41 @@ class StepPlayer(KitWidget):
         return cls(frames, _draw_lawson(P, bounds), phases=lambda f: f.phase,
                    pseudocode=LAWSON_PSEUDOCODE, title=title, describe=_describe_lawson,
                    bounds=bounds, **kwargs)
+
+
+class PickAndStep(KitWidget):
+    """A point picker beside a Bowyer-Watson player that replays whatever points are picked.
+
+    Every click (add, move, remove, preset) rebuilds the player on the new points,
+    inserted in the order they were picked.
+
+    >>> lab = PickAndStep([(0.2, 0.2), (0.8, 0.3), (0.5, 0.9)])
+    >>> len(lab.player.steps)
+    6
+    >>> lab.picker.add_point(0.5, 0.5); len(lab.player.steps), len(lab.picker.triangles)
+    (10, 3)
+    """
+
+    def __init__(self, points=(), **picker_kwargs: Any) -> None:
+        from .picker import PointPicker
+
+        picker_kwargs.setdefault("size", (400, 380))
+        self.picker = PointPicker(points, on_change=self.guard(lambda _: self._rebuild()), **picker_kwargs)
+        self.player = self._player()
+        self._slot = widgets.VBox([self.player])
+        super().__init__([widgets.HBox([self.picker, self._slot])])
+        self.add_class("kit-pick-and-step")
+
+    def _player(self) -> StepPlayer:
+        return StepPlayer.bowyer_watson(self.picker.points, bounds=self.picker.bounds,
+                                        title="Bowyer-Watson on your points", size=(400, 380))
+
+    def _rebuild(self) -> None:
+        self.player = self._player()
+        self._slot.children = [self.player]
+
+    def static_png(self) -> bytes:
+        return self.player.static_png()
+
+    def static_text(self) -> str:
+        return f"PickAndStep: {len(self.picker.points)} points; " + self.player.static_text()

@@ -213,6 +213,15 @@ def test_picker_presets_undo_clear_and_on_change():
         p.add_point(float("nan"), 0)
 
 
+def test_picker_view_fits_points_given_outside_its_bounds():
+    p = PointPicker(TUTORIAL)                              # default bounds are the unit square
+    for x, y in TUTORIAL:
+        px, py = p.canvas.to_pixel(x, y)
+        assert 0 < px < 440 and 0 < py < 400
+    click(p, 3.5, 2.5)
+    assert len(p.points) == 5 and len(p.triangles) == 5
+
+
 def test_picker_custom_draw_and_static_picture():
     calls = []
     p = PointPicker([(0, 0), (1, 0), (0, 1)], draw=lambda ax, pts: calls.append(len(pts)))

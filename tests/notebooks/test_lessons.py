@@ -84,9 +84,13 @@ def test_lesson_runs_headless_and_its_html_shows_every_widget(path: Path, warm_n
     for k, out in enumerate(shown):
         data = out["data"]
         label = data.get("text/plain", "")[:80]
-        if "text/html" in data:
-            assert "<details>" in data["text/html"] and data["text/html"] in html, \
-                f"{path.name}: widget {k} ({label}) lost its static text in the HTML export"
+        if "text/html" in data:      # a quiz: question, choices, the answer folded in <details>
+            folded = data["text/html"].split("<details>", 1)
+            assert len(folded) == 2, f"{path.name}: widget {k} ({label}) has no folded answer"
+            assert "<details>" + folded[1].split("</details>")[0] in html, \
+                f"{path.name}: widget {k} ({label}) lost its folded answer in the HTML export"
+            if "image/png" in data:
+                assert data["image/png"] in html, f"{path.name}: widget {k} ({label}) lost its picture"
         else:
             assert "image/png" in data, f"{path.name}: widget {k} ({label}) has no static picture"
             assert f'src="data:image/png;base64,{data["image/png"]}"' in html, \
