@@ -411,7 +411,7 @@ class StepPlayer(KitWidget):
 
 
 class PickAndStep(KitWidget):
-    """A point picker beside a Bowyer-Watson player that replays whatever points are picked.
+    """A point picker above a Bowyer-Watson player that replays whatever points are picked.
 
     Every click (add, move, remove, preset) rebuilds the player on the new points,
     inserted in the order they were picked.
@@ -430,7 +430,7 @@ class PickAndStep(KitWidget):
         self.picker = PointPicker(points, on_change=self.guard(lambda _: self._rebuild()), **picker_kwargs)
         self.player = self._player()
         self._slot = widgets.VBox([self.player])
-        super().__init__([widgets.HBox([self.picker, self._slot])])
+        super().__init__([self.picker, self._slot])
         self.add_class("kit-pick-and-step")
 
     def _player(self) -> StepPlayer:
