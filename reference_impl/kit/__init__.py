@@ -12,6 +12,7 @@ and the library never import ipywidgets):
   remove it; presets, undo, clear; the triangulation redrawn live;
 * ``PredictReveal`` / ``PredictRevealMany`` (quiz.py): commit to an answer, then see it;
 * ``MeasurePanel`` (measure.py): choose n, run, plot the timings log-log;
+* ``TimedPractice`` (timer.py): a countdown and the judge's ``timed submit`` one click away;
 * ``render`` (render.py): the drawing helpers they share.
 
 Every widget also carries a static PNG for notebooks run without a browser.
@@ -28,7 +29,7 @@ from __future__ import annotations
 import os
 
 __all__ = ["StepPlayer", "PickAndStep", "PointPicker", "PredictReveal", "PredictRevealMany", "MeasurePanel",
-           "quick_mode", "pick"]
+           "TimedPractice", "quick_mode", "pick"]
 
 
 def quick_mode() -> bool:
@@ -53,3 +54,4 @@ from .measure import MeasurePanel  # noqa: E402
 from .picker import PointPicker  # noqa: E402
 from .player import PickAndStep, StepPlayer  # noqa: E402
 from .quiz import PredictReveal, PredictRevealMany  # noqa: E402
+from .timer import TimedPractice  # noqa: E402
