@@ -30,6 +30,7 @@ from typing import Any, Callable, Mapping
 import ipywidgets as widgets
 import numpy as np
 
+from reference_impl.bowyer_watson import TUTORIAL_POINTS
 from reference_impl.delaunay import Delaunay
 from reference_impl.points import as_points
 
@@ -82,7 +83,7 @@ def _random(bounds: Bounds, n: int, seed: int = 0) -> np.ndarray:
 
 
 PRESETS: dict[str, Callable[[Bounds, int], np.ndarray]] = {
-    "tutorial": lambda bounds, n: np.array([(1.0, 1.0), (3.0, 2.0), (5.0, 1.0), (4.0, 4.0)]),
+    "tutorial": lambda bounds, n: np.array(TUTORIAL_POINTS),   # the dry-run example
     "grid": _grid,
     "circle": _circle,
     "collinear": _collinear,

@@ -184,6 +184,10 @@ def test_lesson_03_player_picker_and_quiz_work_in_chromium(lab, page):
     player.locator(".widget-html", has_text="step 2/10").wait_for(timeout=30_000)
     assert player.locator("img").first.get_attribute("src") != before
     assert kernel_says(page, "print(player.index)", "1") == "1"
+    for k in range(3, 9):           # on to step 8: the bad triangles of the last point
+        player.get_by_role("button", name="next").click()
+        player.locator(".widget-html", has_text=f"step {k}/10").wait_for(timeout=30_000)
+    assert kernel_says(page, "print(player.index, player.current_line)", "7 bad") == "7 bad"
     player.screenshot(path=str(SHOTS / "lesson03-player.png"))
 
     # -- the point picker: click on empty space inside the hull
