@@ -26,7 +26,7 @@ import ipywidgets as widgets
 import numpy as np
 
 from .render import Canvas
-from .widget import KitWidget
+from .widget import KitWidget, button, png_image
 
 __all__ = ["MeasurePanel", "time_call", "fit_exponent"]
 
@@ -75,11 +75,9 @@ class MeasurePanel(KitWidget):
         self.results: dict[str, dict[int, float]] = {}
         self.canvas = Canvas(*size)
         self.n = widgets.SelectionSlider(options=self.ns, value=self.ns[0], description="n")
-        self.measure_button = widgets.Button(description="measure", icon="play",
-                                             layout=widgets.Layout(width="8em"))
-        self.all_button = widgets.Button(description="measure all", icon="forward",
-                                         layout=widgets.Layout(width="10em"))
-        self.image = widgets.Image(format="png", layout=widgets.Layout(width=f"{size[0]}px"))
+        self.measure_button = button("measure", "play", "8em")
+        self.all_button = button("measure all", "forward", "10em")
+        self.image = png_image(size[0])
         self.table = widgets.HTML()
         super().__init__([widgets.HBox([self.n, self.measure_button, self.all_button]),
                           self.image, self.table])

@@ -30,11 +30,12 @@ from typing import Any, Callable, Mapping
 import ipywidgets as widgets
 import numpy as np
 
+from reference_impl.bowyer_watson import TUTORIAL_POINTS
 from reference_impl.delaunay import Delaunay
 from reference_impl.points import as_points
 
 from .render import Canvas, draw_points, draw_triangles
-from .widget import KitWidget
+from .widget import KitWidget, button, png_image
 
 __all__ = ["PointPicker", "PRESETS", "preset_points"]
 
@@ -82,7 +83,7 @@ def _random(bounds: Bounds, n: int, seed: int = 0) -> np.ndarray:
 
 
 PRESETS: dict[str, Callable[[Bounds, int], np.ndarray]] = {
-    "tutorial": lambda bounds, n: np.array([(1.0, 1.0), (3.0, 2.0), (5.0, 1.0), (4.0, 4.0)]),
+    "tutorial": lambda bounds, n: np.array(TUTORIAL_POINTS),   # the dry-run example
     "grid": _grid,
     "circle": _circle,
     "collinear": _collinear,
@@ -153,12 +154,12 @@ class PointPicker(KitWidget):
         self._press: tuple[int | None, float, float] | None = None
         self._moved = False
         self.canvas = Canvas(*size)
-        self.image = widgets.Image(format="png", layout=widgets.Layout(width=f"{size[0]}px"))
+        self.image = png_image(size[0])
         self.image.add_class("kit-picker-image")
         self.preset = widgets.Dropdown(options=["(choose a preset)"] + list(self.presets),
                                        description="preset", layout=widgets.Layout(width="16em"))
-        self.undo_button = widgets.Button(description="undo", icon="undo", layout=widgets.Layout(width="7em"))
-        self.clear_button = widgets.Button(description="clear", icon="trash", layout=widgets.Layout(width="7em"))
+        self.undo_button = button("undo", "undo", "7em")
+        self.clear_button = button("clear", "trash", "7em")
         self.status = widgets.HTML()
         super().__init__([widgets.HBox([self.preset, self.undo_button, self.clear_button]),
                           self.image, self.status])

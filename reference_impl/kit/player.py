@@ -39,7 +39,7 @@ from reference_impl.predicates import orient2d
 
 from .render import (COLORS, Canvas, draw_circumcircle, draw_edges, draw_points, draw_triangles,
                      filmstrip, fill_triangles, fit_bounds)
-from .widget import KitWidget
+from .widget import KitWidget, button, png_image
 
 __all__ = ["StepPlayer", "PickAndStep", "BWFrame", "FlipFrame", "BOWYER_WATSON_PSEUDOCODE", "LAWSON_PSEUDOCODE",
            "bowyer_watson_frames", "lawson_frames", "scrambled_triangulation"]
@@ -303,11 +303,9 @@ class StepPlayer(KitWidget):
         self.slider = widgets.IntSlider(value=0, min=0, max=last, description="step",
                                         continuous_update=True)
         widgets.jslink((self.play, "value"), (self.slider, "value"))
-        self.prev = widgets.Button(description="previous", icon="step-backward",
-                                   layout=widgets.Layout(width="8.5em"))
-        self.next = widgets.Button(description="next", icon="step-forward",
-                                   layout=widgets.Layout(width="8.5em"))
-        self.image = widgets.Image(format="png", layout=widgets.Layout(width=f"{size[0]}px"))
+        self.prev = button("previous", "step-backward")
+        self.next = button("next", "step-forward")
+        self.image = png_image(size[0])
         self.caption = widgets.HTML()
         self.code = widgets.HTML()
         controls = widgets.HBox([self.play, self.prev, self.next, self.slider])

@@ -33,7 +33,7 @@ from reference_impl.predicates import incircle, orient2d
 
 from .render import (COLORS, Canvas, draw_circumcircle, draw_edges, draw_points, draw_triangles,
                      fill_triangles, fit_bounds)
-from .widget import KitWidget
+from .widget import KitWidget, button
 
 __all__ = ["PredictReveal", "PredictRevealMany", "bad_triangles_quiz", "locally_delaunay_quiz"]
 
@@ -63,8 +63,7 @@ class _Quiz(KitWidget):
             self._png = canvas.png()
             children.append(widgets.Image(value=self._png, format="png",
                                           layout=widgets.Layout(width=f"{size[0]}px")))
-        self.submit_button = widgets.Button(description="commit and reveal", button_style="primary",
-                                            disabled=True, layout=widgets.Layout(width="14em"))
+        self.submit_button = button("commit and reveal", "", "14em", button_style="primary", disabled=True)
         self.feedback = widgets.HTML()
         children += [self._selector(), self.submit_button, self.feedback]
         super().__init__(children)

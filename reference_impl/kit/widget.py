@@ -30,7 +30,7 @@ from typing import Any, Callable
 
 import ipywidgets as widgets
 
-__all__ = ["KitWidget"]
+__all__ = ["KitWidget", "button", "png_image"]
 
 
 class KitWidget(widgets.VBox):
@@ -72,3 +72,13 @@ class KitWidget(widgets.VBox):
             bundle["image/png"] = base64.b64encode(png).decode("ascii")
         bundle["text/plain"] = self.static_text()
         return bundle
+
+
+def button(description: str, icon: str = "", width: str = "8.5em", **kwargs: Any) -> widgets.Button:
+    """A kit button: a label, a Font Awesome icon, a fixed width."""
+    return widgets.Button(description=description, icon=icon, layout=widgets.Layout(width=width), **kwargs)
+
+
+def png_image(width: int) -> widgets.Image:
+    """An empty PNG ``Image`` shown ``width`` pixels wide (the kit draws into it)."""
+    return widgets.Image(format="png", layout=widgets.Layout(width=f"{width}px"))

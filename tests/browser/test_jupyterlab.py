@@ -158,87 +158,87 @@ def shut_down_kernel(page, url: str) -> None:
     urllib.request.urlopen(req, timeout=10).close()
 
 
-def test_lesson_03_player_picker_and_quiz_work_in_chromium(lab, browser):
+@pytest.fixture
+def page(lab, browser):
+    """A fresh browser tab; its notebook's kernel is shut down afterwards."""
     SHOTS.mkdir(parents=True, exist_ok=True)
-    page = browser.new_page(viewport={"width": 1400, "height": 1000})
+    tab = browser.new_page(viewport={"width": 1400, "height": 1000})
+    yield tab
     try:
-        open_and_run(page, lab, LESSON_03)
-        errors = page.locator(".jp-OutputArea-output[data-mime-type='application/vnd.jupyter.stderr']")
-        assert page.locator(".jp-RenderedText[data-mime-type='application/vnd.jupyter.error']").count() == 0
+        shut_down_kernel(tab, lab)
+    finally:
+        tab.close()
 
-        # -- the step player: press "next"
-        player = page.locator(".kit-step-player").first
-        player.scroll_into_view_if_needed()
-        player.locator(".widget-html", has_text="step 1/10").wait_for(timeout=30_000)
-        before = player.locator("img").first.get_attribute("src")
+
+def test_lesson_03_player_picker_and_quiz_work_in_chromium(lab, page):
+    open_and_run(page, lab, LESSON_03)
+    errors = page.locator(".jp-OutputArea-output[data-mime-type='application/vnd.jupyter.stderr']")
+    assert page.locator(".jp-RenderedText[data-mime-type='application/vnd.jupyter.error']").count() == 0
+
+    # -- the step player: press "next"
+    player = page.locator(".kit-step-player").first
+    player.scroll_into_view_if_needed()
+    player.locator(".widget-html", has_text="step 1/10").wait_for(timeout=30_000)
+    before = player.locator("img").first.get_attribute("src")
+    player.get_by_role("button", name="next").click()
+    player.locator(".widget-html", has_text="step 2/10").wait_for(timeout=30_000)
+    assert player.locator("img").first.get_attribute("src") != before
+    assert kernel_says(page, "print(player.index)", "1") == "1"
+    for k in range(3, 9):           # on to step 8: the bad triangles of the last point
         player.get_by_role("button", name="next").click()
-        player.locator(".widget-html", has_text="step 2/10").wait_for(timeout=30_000)
-        assert player.locator("img").first.get_attribute("src") != before
-        assert kernel_says(page, "print(player.index)", "1") == "1"
-        player.screenshot(path=str(SHOTS / "lesson03-player.png"))
+        player.locator(".widget-html", has_text=f"step {k}/10").wait_for(timeout=30_000)
+    assert kernel_says(page, "print(player.index, player.current_line)", "7 bad") == "7 bad"
+    player.screenshot(path=str(SHOTS / "lesson03-player.png"))
 
-        # -- the point picker: click on empty space inside the hull
-        assert kernel_says(page, "print(len(lab.picker.points), len(lab.picker.triangles))", "4 3") == "4 3"
-        px, py = json.loads(page.evaluate(IN_KERNEL, "import json; print(json.dumps(lab.picker.canvas.to_pixel(3.5, 2.5)))"))
-        image = page.locator(".kit-pick-and-step .kit-picker-image").first
-        image.evaluate("img => img.scrollIntoView({block: 'center', inline: 'center'})")
-        page.wait_for_timeout(300)
-        status = page.locator(".kit-pick-and-step .kit-status").first
-        assert status.inner_text().startswith("4 points")
-        shown = image.bounding_box()
-        natural = image.evaluate("img => [img.naturalWidth, img.naturalHeight]")
-        # a real press and release at that spot (what ipyevents listens to)
-        page.mouse.click(shown["x"] + px * shown["width"] / natural[0], shown["y"] + py * shown["height"] / natural[1])
-        try:
-            page.locator(".kit-pick-and-step .kit-status", has_text="5 points").wait_for(timeout=30_000)
-        except sync_api.TimeoutError:
-            page.screenshot(path=str(SHOTS / "lesson03-click-failed.png"))
-            diag = page.evaluate(IN_KERNEL, "print(len(lab.picker.points), lab.picker.errors.outputs, lab.errors.outputs)")
-            pytest.fail(f"the click at pixel ({px:.0f}, {py:.0f}) added no point; kernel: {diag}")
-        assert "5 Delaunay triangles" in status.inner_text()
-        got = kernel_says(page, "print(len(lab.picker.points), len(lab.picker.triangles), len(lab.player.steps))", "5 5 14")
-        assert got == "5 5 14", got
-        x, y = json.loads(page.evaluate(IN_KERNEL, "print(json.dumps(lab.picker.points[-1].tolist()))"))
-        assert abs(x - 3.5) < 0.05 and abs(y - 2.5) < 0.05
-        page.locator(".kit-pick-and-step").first.screenshot(path=str(SHOTS / "lesson03-picker.png"))
-
-        # -- predict, then reveal: tick the right triangles, commit, see the feedback
-        quiz = page.locator(".kit-predict-reveal").first
-        quiz.scroll_into_view_if_needed()
-        answers = json.loads(page.evaluate(IN_KERNEL, (
-            "import json; q = bad_triangles_quiz(TUTORIAL_POINTS, 2)\n"
-            "print(json.dumps([label for label, v in q.choices if v in q.answers]))")))
-        assert answers
-        for label in answers:
-            quiz.get_by_label(label, exact=True).check()
-        quiz.get_by_role("button", name="commit and reveal").click()
-        quiz.locator(".kit-feedback.right").wait_for(timeout=30_000)
-        assert "Right." in quiz.locator(".kit-feedback").inner_text()
-        quiz.screenshot(path=str(SHOTS / "lesson03-quiz.png"))
-        page.screenshot(path=str(SHOTS / "lesson03.png"))
-        assert errors.count() == 0 or "Traceback" not in " ".join(errors.all_inner_texts())
-    finally:
-        try:
-            shut_down_kernel(page, lab)
-        finally:
-            page.close()
-
-
-def test_lesson_01_runs_in_chromium_and_its_picker_draws(lab, browser):
-    SHOTS.mkdir(parents=True, exist_ok=True)
-    page = browser.new_page(viewport={"width": 1400, "height": 1000})
+    # -- the point picker: click on empty space inside the hull
+    assert kernel_says(page, "print(len(lab.picker.points), len(lab.picker.triangles))", "4 3") == "4 3"
+    px, py = json.loads(page.evaluate(IN_KERNEL, "import json; print(json.dumps(lab.picker.canvas.to_pixel(3.5, 2.5)))"))
+    image = page.locator(".kit-pick-and-step .kit-picker-image").first
+    image.evaluate("img => img.scrollIntoView({block: 'center', inline: 'center'})")
+    page.wait_for_timeout(300)
+    status = page.locator(".kit-pick-and-step .kit-status").first
+    assert status.inner_text().startswith("4 points")
+    shown = image.bounding_box()
+    natural = image.evaluate("img => [img.naturalWidth, img.naturalHeight]")
+    # a real press and release at that spot (what ipyevents listens to)
+    page.mouse.click(shown["x"] + px * shown["width"] / natural[0], shown["y"] + py * shown["height"] / natural[1])
     try:
-        open_and_run(page, lab, LESSON_01)
-        pickers = page.locator(".kit-point-picker")
-        assert pickers.count() >= 3
-        first = pickers.first
-        first.scroll_into_view_if_needed()
-        assert first.locator("img").first.get_attribute("src").startswith("blob:") or \
-            first.locator("img").first.get_attribute("src").startswith("data:")
-        first.screenshot(path=str(SHOTS / "lesson01-picker.png"))
-        page.screenshot(path=str(SHOTS / "lesson01.png"))
-    finally:
-        try:
-            shut_down_kernel(page, lab)
-        finally:
-            page.close()
+        page.locator(".kit-pick-and-step .kit-status", has_text="5 points").wait_for(timeout=30_000)
+    except sync_api.TimeoutError:
+        page.screenshot(path=str(SHOTS / "lesson03-click-failed.png"))
+        diag = page.evaluate(IN_KERNEL, "print(len(lab.picker.points), lab.picker.errors.outputs, lab.errors.outputs)")
+        pytest.fail(f"the click at pixel ({px:.0f}, {py:.0f}) added no point; kernel: {diag}")
+    assert "5 Delaunay triangles" in status.inner_text()
+    got = kernel_says(page, "print(len(lab.picker.points), len(lab.picker.triangles), len(lab.player.steps))", "5 5 14")
+    assert got == "5 5 14", got
+    x, y = json.loads(page.evaluate(IN_KERNEL, "print(json.dumps(lab.picker.points[-1].tolist()))"))
+    assert abs(x - 3.5) < 0.05 and abs(y - 2.5) < 0.05
+    page.locator(".kit-pick-and-step").first.screenshot(path=str(SHOTS / "lesson03-picker.png"))
+
+    # -- predict, then reveal: tick the right triangles, commit, see the feedback
+    quiz = page.locator(".kit-predict-reveal").first
+    quiz.scroll_into_view_if_needed()
+    answers = json.loads(page.evaluate(IN_KERNEL, (
+        "import json; q = bad_triangles_quiz(TUTORIAL_POINTS, 2)\n"
+        "print(json.dumps([label for label, v in q.choices if v in q.answers]))")))
+    assert answers
+    for label in answers:
+        quiz.get_by_label(label, exact=True).check()
+    quiz.get_by_role("button", name="commit and reveal").click()
+    quiz.locator(".kit-feedback.right").wait_for(timeout=30_000)
+    assert "Right." in quiz.locator(".kit-feedback").inner_text()
+    quiz.screenshot(path=str(SHOTS / "lesson03-quiz.png"))
+    page.screenshot(path=str(SHOTS / "lesson03.png"))
+    assert errors.count() == 0 or "Traceback" not in " ".join(errors.all_inner_texts())
+
+
+def test_lesson_01_runs_in_chromium_and_its_picker_draws(lab, page):
+    open_and_run(page, lab, LESSON_01)
+    pickers = page.locator(".kit-point-picker")
+    assert pickers.count() >= 3
+    first = pickers.first
+    first.scroll_into_view_if_needed()
+    assert first.locator("img").first.get_attribute("src").startswith("blob:") or \
+        first.locator("img").first.get_attribute("src").startswith("data:")
+    first.screenshot(path=str(SHOTS / "lesson01-picker.png"))
+    page.screenshot(path=str(SHOTS / "lesson01.png"))
