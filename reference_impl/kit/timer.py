@@ -30,7 +30,7 @@ import ipywidgets as widgets
 from matplotlib.patches import Rectangle
 
 from .render import Canvas
-from .widget import KitWidget
+from .widget import KitWidget, button, png_image
 
 __all__ = ["TimedPractice", "format_clock"]
 
@@ -62,13 +62,11 @@ class TimedPractice(KitWidget):
         self.report = ""
         self.canvas = Canvas(*size)
         self.clock = widgets.HTML()
-        self.image = widgets.Image(format="png", layout=widgets.Layout(width=f"{size[0]}px"))
+        self.image = png_image(size[0])
         self.ticker = widgets.Play(value=0, min=0, max=6 * 3600, step=1, interval=1000, description="clock",
                                    layout=widgets.Layout(display="none"))
-        self.start_button = widgets.Button(description="start the clock", icon="clock-o", button_style="primary",
-                                           layout=widgets.Layout(width="12em"))
-        self.submit_button = widgets.Button(description="submit to the judge", icon="gavel", disabled=True,
-                                            layout=widgets.Layout(width="14em"))
+        self.start_button = button("start the clock", "clock-o", width="12em", button_style="primary")
+        self.submit_button = button("submit to the judge", "gavel", width="14em", disabled=True)
         self.output = widgets.HTML()
         super().__init__([widgets.HBox([self.start_button, self.submit_button, self.ticker]),
                           self.clock, self.image, self.output])
