@@ -49,11 +49,24 @@ def warm_numba_cache():
     from reference_impl import Delaunay, voronoi
     from reference_impl.flips import lawson_flip, mesh_quality
 
+    from reference_impl import (ConstrainedDelaunay, DynamicNetwork, NavMesh, SphericalDelaunay, delaunay_3d,
+                                euclidean_mst)
+
     pts = np.random.default_rng(0).random((50, 2))
     tris = Delaunay(pts).simplices
     voronoi(pts, (0, 0, 1, 1))
     lawson_flip(pts, tris)
     mesh_quality(pts, tris)
+    # kernels that lessons 07-11 use (a cold compile of each takes 30-80 s on a loaded machine)
+    euclidean_mst(pts)
+    ConstrainedDelaunay(pts, [(0, 1)])
+    delaunay_3d(np.random.default_rng(0).random((20, 3)))
+    SphericalDelaunay(pts * 90)
+    NavMesh([(0, 0), (4, 0), (4, 4), (2, 1), (0, 4)]).shortest_path((0.5, 3), (3.5, 3))
+    net = DynamicNetwork()
+    for x, y in pts[:10]:
+        net.join(x, y)
+    net.fail(3)
 
 
 def widget_outputs(nb) -> list[dict]:
