@@ -32,7 +32,7 @@ from matplotlib.collections import LineCollection, PolyCollection
 from matplotlib.figure import Figure
 from matplotlib.patches import Circle
 
-__all__ = ["Canvas", "draw_points", "draw_triangles", "fill_triangles", "draw_edges",
+__all__ = ["Canvas", "show_figure", "draw_points", "draw_triangles", "fill_triangles", "draw_edges",
            "draw_circumcircle", "circumcircle", "filmstrip", "png_size", "fit_bounds",
            "COLORS"]
 
@@ -227,3 +227,22 @@ def filmstrip(draw: Callable[..., None], items: Iterable, *, columns: int = 4,
     buf = io.BytesIO()
     fig.savefig(buf, format="png", dpi=100, pil_kwargs={"compress_level": 6})
     return buf.getvalue()
+
+
+def show_figure(fig, dpi: int = 90) -> None:
+    """Display a matplotlib figure as a PNG and close it.
+
+    Works whatever the matplotlib backend (``plt.show()`` under ``Agg``, as in
+    headless runs, displays nothing), so an exported notebook keeps the picture.
+
+    >>> import matplotlib.pyplot as plt
+    >>> fig, ax = plt.subplots(); _ = ax.plot([0, 1]); show_figure(fig)   # doctest: +ELLIPSIS
+    <IPython.core.display.Image object>
+    """
+    import matplotlib.pyplot as plt
+    from IPython.display import Image, display
+
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", dpi=dpi, bbox_inches="tight")
+    plt.close(fig)
+    display(Image(buf.getvalue()))
