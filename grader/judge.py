@@ -200,6 +200,8 @@ class Judge:
                         answer = chk.read_output(outcome.value, args)
                 except chk.PresentationError as exc:
                     r.verdict, r.message = Verdict.PE, str(exc)
+                except getattr(chk, "WrongAnswer", ()) as exc:  # optional: wrong before any real check
+                    r.verdict, r.message = Verdict.WA, str(exc)
                 else:
                     ok, message = chk.check(args, answer, expected)
                     r.verdict, r.message = (Verdict.AC, "") if ok else (Verdict.WA, message)
