@@ -38,23 +38,36 @@ _REPLY_KEYS = ("ok", "error", "bad_type")
 
 
 def wall_limit_for(time_limit: float) -> float:
-    """Wall-clock cap of one test: TLE is decided on CPU time; this catches sleeping, with slack
-    for a loaded machine (half the limit plus one second).
+    """Backstop wall-clock cap of one test, reached only on a machine so loaded that the submission
+    hardly gets a CPU (a 2-core machine at load 9 gives it about a fifth of one). A submission
+    that sleeps is stopped much earlier (:func:`sleep_limit_for`); TLE is decided on CPU time.
 
     >>> wall_limit_for(2.0)
-    4.0
+    30.0
     """
-    return 1.5 * time_limit + 1.0
+    return 10 * time_limit + 10.0
+
+
+def sleep_limit_for(time_limit: float) -> float:
+    """Wall time a test may spend *idle*: neither running nor waiting for a busy CPU (sleeping,
+    blocked on a lock or a pipe). Time spent waiting in the run queue of a loaded machine does not
+    count (it is read from ``/proc/<pid>/schedstat``), so this is slack, not a sleeping allowance.
+
+    >>> sleep_limit_for(2.0)
+    2.0
+    """
+    return 0.5 * time_limit + 1.0
 
 
 def idle_budget_for(time_limit: float) -> float:
-    """Wall time a whole submission may spend not computing (sleeping, blocked, or waiting for a
-    busy CPU), summed over its tests: once spent, the remaining tests are TLE at once.
+    """Idle wall time (see :func:`sleep_limit_for`) a whole submission may spend, summed over its
+    tests: once spent, the remaining tests are TLE at once, so a sleeper holds a judge for at most
+    this long.
 
     >>> idle_budget_for(6.0)
-    54.0
+    30.0
     """
-    return 4 * time_limit + 30.0
+    return 2 * time_limit + 18.0
 
 
 @dataclass
@@ -79,6 +92,15 @@ def _cpu_seconds(pid: int) -> float:
         with open(f"/proc/{pid}/schedstat", "rb") as f:
             precise = int(f.read().split()[0]) / 1e9
         return max(ticks, precise)
+    except (OSError, IndexError, ValueError):
+        return 0.0
+
+
+def _runqueue_seconds(pid: int) -> float:
+    """Time the process's main thread spent runnable but waiting for a CPU (``schedstat`` field 2)."""
+    try:
+        with open(f"/proc/{pid}/schedstat", "rb") as f:
+            return int(f.read().split()[1]) / 1e9
     except (OSError, IndexError, ValueError):
         return 0.0
 
@@ -400,6 +422,7 @@ class FunctionWorker:
         rid = self._next_id
         _reset_peak(child.pid)
         cpu0 = _cpu_seconds(child.pid)
+        rq0 = _runqueue_seconds(child.pid)
         wall0 = time.monotonic()
         child.send({"id": rid, "args": args})
         wall_limit = wall_limit_for(time_limit)
@@ -415,14 +438,16 @@ class FunctionWorker:
             if used > time_limit + 0.05:
                 cpu_exceeded = True
                 break
-            if time.monotonic() - wall0 - used > idle_left:
+            idle = time.monotonic() - wall0 - used - (_runqueue_seconds(child.pid) - rq0)
+            if idle > min(idle_left, sleep_limit_for(time_limit)):
                 idle_exceeded = True
                 break
         wall = time.monotonic() - wall0
         cpu = _cpu_seconds(child.pid) - cpu0 if child.exit_status is None else wall
+        waited = _runqueue_seconds(child.pid) - rq0 if child.exit_status is None else 0.0
         mem = _peak_rss_mb(child.pid)
         time_s = round(max(cpu, 0.0), 4)
-        idle = max(0.0, wall - max(cpu, 0.0))
+        idle = max(0.0, wall - max(cpu, 0.0) - waited)
         outcome = self._outcome(child, reply, time_limit, time_s, mem, cpu_exceeded, idle_exceeded)
         outcome.idle_s = idle
         return outcome
@@ -445,8 +470,9 @@ class FunctionWorker:
                                   time_s=max(time_s, time_limit), memory_mb=mem)
             if idle_exceeded:
                 self.stop()
-                return RunOutcome("timeout", message="the submission's wall-time budget is used up (it spent it "
-                                                     "sleeping or blocked)", time_s=max(time_s, time_limit),
+                return RunOutcome("timeout", message="stopped: it was idle (sleeping or blocked, not computing) for "
+                                                     f"over {sleep_limit_for(time_limit):g} s, or the submission's "
+                                                     "idle budget is used up", time_s=max(time_s, time_limit),
                                   memory_mb=mem)
             if child.exit_status is None:
                 self.stop()
@@ -499,6 +525,7 @@ def run_stdio(box: Sandbox, source: str, input_text: str, time_limit: float, for
         for fd in (fin, fout, ferr):
             os.close(fd)
     wall0 = time.monotonic()
+    waited = 0.0  # run-queue wait of the new process, as last seen while it was alive
     deadline = wall0 + wall_limit_for(time_limit)
     reply = None
     cpu_exceeded = junk = False
@@ -509,11 +536,14 @@ def run_stdio(box: Sandbox, source: str, input_text: str, time_limit: float, for
         if reply is not None and ("garbled" in reply or "output_limit" in reply):
             junk = True
             break
-        used = _cpu_seconds(child.pid) if child.exit_status is None else 0.0
+        if child.exit_status is not None:
+            break
+        used = _cpu_seconds(child.pid)
         if used > time_limit + 0.05:
             cpu_exceeded = True
             break
-        if child.exit_status is None and time.monotonic() - wall0 - used > idle_left:
+        waited = max(waited, _runqueue_seconds(child.pid))
+        if time.monotonic() - wall0 - used - waited > min(idle_left, sleep_limit_for(time_limit)):
             break
     wall = time.monotonic() - wall0
     timed_out = cpu_exceeded or (not junk and child.exit_status is None and (reply is None or "violation" not in reply))
@@ -526,7 +556,7 @@ def run_stdio(box: Sandbox, source: str, input_text: str, time_limit: float, for
     mem = (ru.ru_maxrss / 1024) if ru is not None else 0.0
     time_s = round(cpu, 4)
     outcome = _stdio_outcome(box, child, time_limit, time_s, mem, timed_out, junk, out_path, err_path)
-    outcome.idle_s = max(0.0, wall - cpu)
+    outcome.idle_s = max(0.0, wall - cpu - waited)
     return outcome
 
 
