@@ -1,5 +1,6 @@
-"""Wrong answer: the tutorial's cavity boundary, which keeps one copy of an edge shared by two
-bad triangles (it should drop both). Exact predicates and a large super-triangle otherwise.
+"""Wrong answer: the original tutorial's cavity boundary (reference_impl/tutorial_bugs.py), which
+keeps one copy of an edge shared by two bad triangles (it should drop both). Exact predicates
+and a large super-triangle otherwise.
 
 Why it is wrong: the kept inner edge makes new triangles that overlap.
 Killed by: tiny (a square with its centre, or ten random points).

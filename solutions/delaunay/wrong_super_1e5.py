@@ -1,5 +1,5 @@
-"""Wrong answer: the tutorial's fixed super-triangle at +-1e5 (exact predicates otherwise, and a
-correct cavity boundary).
+"""Wrong answer: the original tutorial's fixed super-triangle (reference_impl/tutorial_bugs.py) at
++-1e5 (exact predicates otherwise, and a correct cavity boundary).
 
 Why it is wrong: a point outside the fixed super-triangle lies in no circumcircle, or in the
 wrong ones, so points far from the origin are skipped or mis-connected.

@@ -8,8 +8,8 @@ Killed by: sample.
 Function mode: delaunay(points) / bowyer_watson(points). Stdio: python3 wrong_unoriented.py < input
 
 Example:
-    >>> sorted(map(sorted, delaunay([[0, 0], [1, 0], [0, 1]])))
-    [[0, 1, 2]]
+    >>> delaunay([[0, 0], [1, 0], [0, 1]])     # already wrong: the one triangle is lost
+    []
 """
 import sys
 
