@@ -11,7 +11,10 @@ Example:
 
 from __future__ import annotations
 
+import ctypes
 import hashlib
+import os
+import signal
 import sys
 import time
 from concurrent.futures import ProcessPoolExecutor, as_completed
@@ -22,6 +25,8 @@ from typing import Iterable
 from .judge import Judge
 from .problems import load_problem
 from .store import ResultStore
+from .submissions import SubmissionError, read_submission_bytes
+from .text import clean
 from .verdicts import JudgeResult, TestResult
 
 
@@ -50,8 +55,24 @@ def discover(root: str | Path, problem: str) -> list[Job]:
     for d in sorted(p for p in root.iterdir() if p.is_dir()):
         f = find_submission(d, problem)
         if f is not None:
-            jobs.append(Job(d.name, str(f), hashlib.sha256(f.read_bytes()).hexdigest()[:16], f.stat().st_mtime))
+            try:  # links, special files and oversize files are not read: judging reports them as CE
+                data = read_submission_bytes(f)
+            except SubmissionError as exc:
+                data = f"unreadable: {exc}".encode()
+            jobs.append(Job(clean(d.name, 200), str(f), hashlib.sha256(data).hexdigest()[:16], f.lstat().st_mtime))
     return jobs
+
+
+def _die_with_parent(parent: int) -> None:
+    """Pool worker initialiser: the kernel kills this worker when the grading process dies
+    (``PR_SET_PDEATHSIG``), so a ``kill -9`` of ``grade`` leaves no worker judging or idling."""
+    PR_SET_PDEATHSIG = 1
+    try:
+        ctypes.CDLL(None, use_errno=True).prctl(PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
+    except (OSError, AttributeError):
+        pass
+    if os.getppid() != parent:  # the parent died before the signal was armed
+        os._exit(1)
 
 
 _judges: dict[tuple, Judge] = {}
@@ -129,6 +150,7 @@ def grade_class(problem: str, root: str | Path, db_path: str | Path, jobs: int =
     store = ResultStore(db_path)
     todo = [j for j in todo_all if not store.is_done(j.student, problem, j.sha)]
     summaries = [{"student": j.student, "skipped": "already graded"} for j in todo_all if j not in todo]
+    store.close()  # pool workers are forked: none may inherit an open SQLite connection
     hide = tuple(str(Path(p).resolve()) for p in (root, Path(db_path).parent, report_dir) if p)
     bar = Progress(len(todo)) if progress else None
     # materialise tests once in the parent, before workers race for it
@@ -136,9 +158,12 @@ def grade_class(problem: str, root: str | Path, db_path: str | Path, jobs: int =
     if report_dir:
         Path(report_dir).mkdir(parents=True, exist_ok=True)
     if scheduler:
+        store = ResultStore(db_path)
         summaries += _grade_dask(problem, todo, store, scheduler, bar)
+        store.close()
     else:
-        with ProcessPoolExecutor(max_workers=max(1, jobs)) as pool:
+        with ProcessPoolExecutor(max_workers=max(1, jobs), initializer=_die_with_parent,
+                                 initargs=(os.getpid(),)) as pool:
             futures = {pool.submit(grade_local, problem, j, str(db_path), hide, str(report_dir) if report_dir else None): j
                        for j in todo}
             for fut in as_completed(futures):
@@ -151,8 +176,9 @@ def grade_class(problem: str, root: str | Path, db_path: str | Path, jobs: int =
                 if bar:
                     bar.step(f"{s['student']} {s.get('verdict')} {s.get('score', '')}/{s.get('max_score', '')}")
     if csv_path:
+        store = ResultStore(db_path)
         store.export_csv(problem, csv_path)
-    store.close()
+        store.close()
     return summaries
 
 
@@ -165,7 +191,18 @@ def _grade_dask(problem: str, todo: Iterable[Job], store: ResultStore, scheduler
         for j in todo:
             store.begin(j.student, problem, j.path, j.sha, j.submitted_at)
             prior = [r.to_json() for r in store.prior(j.student, problem, j.sha).values()]
-            fut = client.submit(grade_remote, problem, j.student, Path(j.path).name, Path(j.path).read_bytes(), prior,
+            try:
+                data = read_submission_bytes(j.path)
+            except SubmissionError:  # judged here: no code runs, the result is CE with the reason
+                data = None
+            if data is None:
+                result = _judge_for(problem, ()).judge_path(j.path)
+                for t in result.tests:
+                    store.add_test(j.student, problem, j.sha, t)
+                store.finish(j.student, problem, j.sha, result)
+                out.append({"student": j.student, "verdict": result.verdict, "score": 0, "max_score": result.max_score})
+                continue
+            fut = client.submit(grade_remote, problem, j.student, Path(j.path).name, data, prior,
                                 key=f"grade-{problem}-{j.student}-{j.sha}", pure=False)
             futures[fut] = j
         for fut in dask_completed(list(futures)):

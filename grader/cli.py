@@ -43,7 +43,7 @@ def _cmd_judge(a: argparse.Namespace) -> int:
     if not path.is_file():
         raise ValueError(f"submission file {path} does not exist")
     judge = Judge(a.problem, hide=[str(path.resolve().parent)])
-    result = judge.judge_path(path)
+    result = judge.judge_path(path, follow_links=True)  # the file named on the command line
     if a.report:
         from .report import write_report
 

@@ -24,6 +24,7 @@ from pathlib import Path
 from .judge import Judge
 from .problems import load_problem
 from .store import ResultStore
+from .submissions import read_submission_bytes
 from .verdicts import JudgeResult
 
 POLICIES = ("multiplier", "reject", "accept")
@@ -75,11 +76,11 @@ def submit(problem: str, student: str, path: str | Path, store: ResultStore, now
     elapsed = now - started
     late = now > deadline + float(t["grace_s"])
     path = Path(path)
-    sha = hashlib.sha256(path.read_bytes()).hexdigest()[:16]
+    sha = hashlib.sha256(read_submission_bytes(path, follow_links=True)).hexdigest()[:16]  # a file named by the caller
     judge = judge or Judge(problem, hide=[str(path.resolve().parent), str(Path(store.path).resolve().parent)])
     store.begin(student, problem, str(path), sha, now)
     result = judge.judge_path(path, on_test=lambda r: store.add_test(student, problem, sha, r),
-                              prior=store.prior(student, problem, sha))
+                              prior=store.prior(student, problem, sha), follow_links=True)
     multiplier, note = 1.0, f"elapsed {elapsed / 60:.1f} min"
     if late:
         over = (now - deadline) / 60

@@ -20,7 +20,7 @@ import pytest
 from grader.kattis import LANGUAGES_YAML, export, shortname
 
 VERIFY = Path(sys.executable).with_name("verifyproblem")
-EXPORTS = {"delaunay": ["tiny", "large"], "bowyer-watson-timed": ["tiny", "random"]}
+EXPORTS = {"delaunay": ["tiny", "degenerate", "large"], "bowyer-watson-timed": ["tiny", "degenerate", "random"]}
 
 
 @pytest.mark.slow

@@ -25,7 +25,7 @@ def test_solution_verdict(problem, file, verdict, judges):
     # a failing solution stops at its first failure (as Kattis does): the verdict is the same
     key = (problem, verdict != "AC")
     judge = judges.setdefault(key, Judge(problem, stop_at_first_failure=verdict != "AC"))
-    result = judge.judge_path(REPO / "solutions" / problem / file)
+    result = judge.judge_path(REPO / "solutions" / problem / file, follow_links=True)
     assert result.verdict == verdict, [(t.name, str(t.verdict), t.message[:120]) for t in result.tests]
     assert Verdict.JE not in [t.verdict for t in result.tests]
     if verdict == "AC":

@@ -28,6 +28,10 @@ class PresentationError(Exception):
     """The output has the wrong shape or type (verdict PE), as opposed to a wrong triangulation."""
 
 
+class WrongAnswer(Exception):
+    """The output is wrong before any triangle is looked at (verdict WA): too many triangles."""
+
+
 def _load_verify():
     embedded = globals().get("EMBEDDED_VERIFY_SOURCE")  # set by `python -m grader export-kattis`
     if embedded:
@@ -82,10 +86,22 @@ def _index(v, where: str) -> int:
     raise PresentationError(f"{where}: vertex index {v!r} is a {type(v).__name__}, not an int")
 
 
+def _at_most(m: int, args: list | None) -> None:
+    """Reject over 2n triangles for n points before looking at any of them, so a forged huge answer
+    costs nothing beyond reading it (bounded by the output limit). A triangulation has at most
+    2n - 5; a count up to 2n gets the full check (and its message), which costs O(n log n)."""
+    if args is not None:
+        n = len(args[0])
+        if m > 2 * n:
+            raise WrongAnswer(f"{m} triangles for {n} points: a triangulation of n points has at most "
+                              f"2n - 5 triangles")
+
+
 def from_result(value, args: list) -> list[list[int]]:
     """Type-check what the entry function returned (JSON data): a list of [i, j, k] int triples."""
     if not isinstance(value, list):
-        raise PresentationError(f"expected a list of triangles, got {type(value).__name__}: {str(value)[:60]}")
+        raise PresentationError(f"expected a list of triangles, got {type(value).__name__}: {repr(value)[:60]}")
+    _at_most(len(value), args)
     out = []
     for k, t in enumerate(value):
         if not isinstance(t, list) or len(t) != 3:
@@ -103,6 +119,7 @@ def read_output(text: str, args: list) -> list[list[int]]:
         m = int(lines[0].strip())
     except ValueError:
         raise PresentationError(f"first line should be the number of triangles, got {lines[0][:60]!r}") from None
+    _at_most(m, args or None)
     body = [ln for ln in lines[1:] if ln.strip()]
     if m < 0 or len(body) != m:
         raise PresentationError(f"announced {m} triangles but {len(body)} lines follow")
@@ -140,13 +157,15 @@ def main(argv: list[str]) -> int:
     input_path, answer_path, feedback_dir = argv[1], argv[2], argv[3]
     try:
         team = sys.stdin.buffer.read().decode("utf-8")
-        triangles = read_output(team, None)  # malformed output is rejected before any heavy work
         args = read_input(Path(input_path).read_text())
+        triangles = read_output(team, args)  # malformed or oversize output is rejected before any heavy work
         ok, message = check(args, triangles, read_answer(Path(answer_path).read_text()))
     except UnicodeDecodeError:
         ok, message = False, "presentation error: the output is not UTF-8 text"
     except PresentationError as exc:
         ok, message = False, f"presentation error: {exc}"
+    except WrongAnswer as exc:
+        ok, message = False, str(exc)
     Path(feedback_dir, "judgemessage.txt").write_text(message + "\n")
     return 42 if ok else 43
 
