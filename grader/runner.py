@@ -24,6 +24,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Sequence
 
+from .engines import ENGINE_API, IMPORTED_BY_LIBRARIES, engine_libraries, engine_modules
 from .sandbox import Sandbox, python_roots
 
 #: The child's program, passed with ``-c`` (the grader's directory is not visible in the jail).
@@ -51,7 +52,14 @@ class RunOutcome:
     where: tuple[str, ...] = ()
 
 
-def _cpu_seconds(pid: int) -> float:
+def _cpu_seconds(box: Sandbox, pid: int) -> float:
+    """CPU seconds used so far by the whole sandbox (its cgroup: forked helpers included), or
+    by process ``pid`` when the sandbox has no group (not root)."""
+    if box.group is not None:
+        try:
+            return box.group.cpu_seconds()
+        except (OSError, ValueError):
+            return 0.0
     try:
         with open(f"/proc/{pid}/stat", "rb") as f:
             fields = f.read().rsplit(b")", 1)[1].split()
@@ -63,7 +71,14 @@ def _cpu_seconds(pid: int) -> float:
         return 0.0
 
 
-def _peak_rss_mb(pid: int) -> float:
+def _peak_rss_mb(box: Sandbox, pid: int) -> float:
+    """Peak memory since the last :func:`_reset_peak`: of the whole sandbox (cgroup) when it has
+    a group, else the peak RSS of process ``pid``."""
+    if box.group is not None:
+        try:
+            return box.group.peak_memory_mb()
+        except (OSError, ValueError):
+            return 0.0
     try:
         with open(f"/proc/{pid}/status", "rb") as f:
             for line in f:
@@ -74,12 +89,27 @@ def _peak_rss_mb(pid: int) -> float:
     return 0.0
 
 
-def _reset_peak(pid: int) -> None:
+def _reset_peak(box: Sandbox, pid: int) -> None:
+    if box.group is not None:
+        try:
+            box.group.reset_peak()
+        except (OSError, ValueError):
+            pass
+        return
     try:
         with open(f"/proc/{pid}/clear_refs", "w") as f:
             f.write("5")
     except OSError:
         pass
+
+
+def _memory_limit_hit(box: Sandbox) -> bool:
+    """Did the kernel kill a process of the sandbox for memory (its cgroup's OOM killer) since
+    the last :func:`_reset_peak`? (A forked helper can die that way while the worker answers.)"""
+    try:
+        return box.group is not None and box.group.memory_limit_hit()
+    except (OSError, ValueError):
+        return False
 
 
 def _describe_signal(sig: int) -> str:
@@ -193,7 +223,7 @@ class _Child:
             else:
                 if _ == 0:
                     return
-            self.exit_status = os.waitstatus_to_exitcode(status)
+            self.exit_status = self.box.decode_exit(os.waitstatus_to_exitcode(status))
             self.proc.returncode = self.exit_status
 
     def kill(self) -> None:
@@ -204,7 +234,7 @@ class _Child:
             except OSError:
                 pass
             _, status, self.rusage = os.wait4(self.pid, 0)
-            self.exit_status = os.waitstatus_to_exitcode(status)
+            self.exit_status = self.box.decode_exit(os.waitstatus_to_exitcode(status))
             self.proc.returncode = self.exit_status
         self.box.kill_all()
         self.close()
@@ -231,7 +261,9 @@ def _child_config(box: Sandbox, mode: str, entry: str, forbidden: Sequence[str],
     read_roots = python_roots() + [work, "/dev/null", "/dev/urandom", "/dev/zero", "/proc/self",
                                    "/usr/share/zoneinfo", "/etc/localtime"]
     return {"mode": mode, "entry": entry, "forbidden": list(forbidden), "filename": filename,
-            "read_roots": read_roots, "write_roots": [work]}
+            "read_roots": read_roots, "write_roots": [work], "engines": engine_modules(forbidden),
+            "engine_api": ENGINE_API, "engine_libs": engine_libraries(forbidden),
+            "library_imports": list(IMPORTED_BY_LIBRARIES)}
 
 
 def _classify_death(child: _Child, memory_mb: float, limit_mb: int) -> RunOutcome:
@@ -324,8 +356,8 @@ class FunctionWorker:
         assert child is not None
         self._next_id += 1
         rid = self._next_id
-        _reset_peak(child.pid)
-        cpu0 = _cpu_seconds(child.pid)
+        _reset_peak(self.box, child.pid)
+        cpu0 = _cpu_seconds(self.box, child.pid)
         wall0 = time.monotonic()
         child.send({"id": rid, "args": args})
         wall_limit = wall_limit_for(time_limit)
@@ -339,14 +371,18 @@ class FunctionWorker:
                 continue  # a stale or forged reply (wrong id) is ignored
             if child.exit_status is not None or time.monotonic() >= deadline:
                 break
-            if _cpu_seconds(child.pid) - cpu0 > time_limit + 0.05:
+            if _cpu_seconds(self.box, child.pid) - cpu0 > time_limit + 0.05:
                 cpu_exceeded = True
                 break
         wall = time.monotonic() - wall0
-        cpu = _cpu_seconds(child.pid) - cpu0 if child.exit_status is None else wall
-        mem = _peak_rss_mb(child.pid)
+        cpu = _cpu_seconds(self.box, child.pid) - cpu0 if child.exit_status is None or self.box.group else wall
+        mem = _peak_rss_mb(self.box, child.pid)
         time_s = round(max(cpu, 0.0), 4)
         overflow = _output_overflow(self.box, self.out_paths)
+        if _memory_limit_hit(self.box) and not (reply is not None and "violation" in reply):
+            self.stop()
+            return RunOutcome("memory", message="the submission's processes together went over the memory limit",
+                              time_s=time_s, memory_mb=max(mem, float(self.box.limits.memory_mb)))
         if reply is not None and "violation" in reply:
             self.stop()
             return RunOutcome("violation", message=str(reply["violation"])[:500], time_s=time_s, memory_mb=mem)
@@ -401,6 +437,8 @@ def run_stdio(box: Sandbox, source: str, input_text: str, time_limit: float, for
     fin = os.open(in_path, os.O_RDONLY)
     fout = os.open(out_path, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o600)
     ferr = os.open(err_path, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o600)
+    _reset_peak(box, 0)
+    cpu0 = _cpu_seconds(box, 0)
     try:
         child = _Child(box, config, source, fin, fout, ferr, time_limit + 1)
     finally:
@@ -414,7 +452,7 @@ def run_stdio(box: Sandbox, source: str, input_text: str, time_limit: float, for
         reply = child.wait_reply(min(time.monotonic() + 0.2, deadline), want="__never__")
         if reply is not None and "violation" in reply:
             break
-        if child.exit_status is None and _cpu_seconds(child.pid) > time_limit + 0.05:
+        if child.exit_status is None and _cpu_seconds(box, child.pid) - (cpu0 if box.group else 0.0) > time_limit + 0.05:
             cpu_exceeded = True
             break
     timed_out = cpu_exceeded or (child.exit_status is None and (reply is None or "violation" not in reply))
@@ -425,10 +463,15 @@ def run_stdio(box: Sandbox, source: str, input_text: str, time_limit: float, for
     ru = child.rusage
     cpu = (ru.ru_utime + ru.ru_stime) if ru is not None else 0.0
     mem = (ru.ru_maxrss / 1024) if ru is not None else 0.0
+    if box.group is not None:  # the whole sandbox, forked helpers included
+        cpu, mem = max(cpu, _cpu_seconds(box, 0) - cpu0), max(mem, _peak_rss_mb(box, 0))
     time_s = round(cpu, 4)
     violation = child.violation or next((r["violation"] for r in child.replies if "violation" in r), None)
     if violation:
         return RunOutcome("violation", message=str(violation)[:500], time_s=time_s, memory_mb=mem)
+    if _memory_limit_hit(box):
+        return RunOutcome("memory", message="the program's processes together went over the memory limit",
+                          time_s=time_s, memory_mb=max(mem, float(box.limits.memory_mb)))
     if _output_overflow(box, [out_path, err_path]):
         return RunOutcome("output_limit", message=f"more than {box.limits.output_mb} MiB of output",
                           time_s=time_s, memory_mb=mem)
