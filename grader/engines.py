@@ -134,9 +134,10 @@ def cover_paths(forbidden: Sequence[str]) -> list[str]:
 def modules_of(paths: Sequence[str]) -> list[str]:
     """The module names of covered paths (inverse of :func:`cover_paths` for one site dir)."""
     out = []
+    bases = sorted(site_dirs(), key=len, reverse=True)  # the deepest: sys.path may hold the checkout too
     for p in paths:
         r = os.path.realpath(p)
-        for base in site_dirs():
+        for base in bases:
             if r.startswith(base + os.sep):
                 rel = os.path.relpath(r, base).split(os.sep)
                 rel[-1] = rel[-1].split(".", 1)[0]
