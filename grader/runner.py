@@ -229,10 +229,7 @@ class _Child:
     def kill(self) -> None:
         """Kill the process group, reap the child, then sweep every process of the sandbox uid."""
         if self.exit_status is None:
-            try:
-                os.killpg(self.pid, signal.SIGKILL)
-            except OSError:
-                pass
+            self.box.terminate(self.pid)
             _, status, self.rusage = os.wait4(self.pid, 0)
             self.exit_status = self.box.decode_exit(os.waitstatus_to_exitcode(status))
             self.proc.returncode = self.exit_status

@@ -38,6 +38,7 @@ from __future__ import annotations
 import ctypes
 import ctypes.util
 import fcntl
+import functools
 import hashlib
 import json
 import os
@@ -82,8 +83,10 @@ MPL_DIR = JAIL_WORKDIR + "/.matplotlib"
 JAIL_ENV = "GRADER_JAIL"
 #: Address space allowed beyond the memory limit when a cgroup bounds the real memory (MiB).
 ADDRESS_HEADROOM_MB = 1024
-#: Processes a bubblewrap jail adds to the student's (its monitor and its pid-1 reaper).
-BWRAP_PROCESSES = 2
+#: Processes a bubblewrap jail adds to the student's: its monitor and its pid-1 reaper, plus room
+#: for reapers of earlier runs: bubblewrap's monitor exits without reaping its reaper, which the
+#: host's init then reaps within about a second (a dead zombie meanwhile, still counted).
+BWRAP_PROCESSES = 2 + 8
 
 _libc = ctypes.CDLL(ctypes.util.find_library("c") or "libc.so.6", use_errno=True)
 _libc.mount.argtypes = [ctypes.c_char_p, ctypes.c_char_p, ctypes.c_char_p, ctypes.c_ulong, ctypes.c_char_p]
@@ -140,6 +143,17 @@ def _outermost(paths: Sequence[str]) -> list[str]:
     return [p for p in paths if not any(p != o and _under(p, o) for o in paths)]
 
 
+@functools.lru_cache(maxsize=32)
+def _expand_cover(cover: tuple[str, ...]) -> tuple[list[str], list[str]]:
+    """(forbidden module names, paths to cover) for the installed paths a judge asks to cover:
+    every other installed copy and the engines they wrap are added, and wrappers that allowed
+    libraries import (``matplotlib/tri``) are left readable. Cached: it scans site directories."""
+    given = sorted({os.path.realpath(c) for c in cover if os.path.exists(c)})
+    modules = engines.modules_of(given)
+    wrappers = {p for p in given if set(engines.modules_of([p])) & set(engines.IMPORTED_BY_LIBRARIES)}
+    return modules, _outermost(sorted((set(given) - wrappers) | set(engines.cover_paths(modules))))
+
+
 def bwrap_path() -> str | None:
     """The bubblewrap binary, if installed."""
     return shutil.which("bwrap", path="/usr/bin:/bin:/usr/local/bin")
@@ -181,6 +195,7 @@ def _probe_bwrap(path: str, uid: int) -> bool:
     return r.returncode == 0
 
 
+@functools.lru_cache(maxsize=1)
 def matplotlib_fontlist() -> str | None:
     """A font cache for matplotlib, built once per matplotlib installation, listing only fonts
     inside the Python installation (readable in the jail); None without matplotlib.
@@ -266,10 +281,7 @@ class Sandbox:
         repo = str(Path(__file__).resolve().parent.parent)
         hidden = {"/root", "/home", repo, *(os.path.realpath(p) for p in hide)}
         self._hidden = sorted(h for h in hidden if os.path.isdir(h) and h not in SYSTEM_DIRS)
-        given = sorted({os.path.realpath(c) for c in cover if os.path.exists(c)})
-        self.forbidden_modules = engines.modules_of(given)
-        wrappers = {p for p in given if set(engines.modules_of([p])) & set(engines.IMPORTED_BY_LIBRARIES)}
-        self._cover = _outermost(sorted((set(given) - wrappers) | set(engines.cover_paths(self.forbidden_modules))))
+        self.forbidden_modules, self._cover = _expand_cover(tuple(sorted(cover)))
         self._plan: _Plan | None = None
         self.group: cgroups.Group | None = None
         self.kind = "rlimits"
@@ -459,15 +471,38 @@ class Sandbox:
             if seccomp_fd >= 0:
                 os.close(seccomp_fd)
 
+    def terminate(self, pid: int) -> None:
+        """SIGKILL a child started by :meth:`spawn` and everything it started. For bubblewrap,
+        its pid-1 reaper goes first: the kernel then kills and reaps the whole pid namespace and
+        bubblewrap exits by itself, so no zombie is left to the host's init (which reaps slowly,
+        about a second here, holding RLIMIT_NPROC slots meanwhile)."""
+        if self.kind == "bwrap":
+            for child in _children(pid):
+                try:
+                    os.kill(child, signal.SIGKILL)
+                except OSError:
+                    pass
+            deadline = time.monotonic() + 1.0
+            while time.monotonic() < deadline and _alive(pid):
+                time.sleep(0.002)
+        try:
+            os.killpg(pid, signal.SIGKILL)
+        except OSError:
+            pass
+
     def kill_all(self, wait_s: float = 5.0) -> None:
         """SIGKILL every process of this slot's uid (root mode) and wait until all are gone
         (reaped), so the next run starts with a clean RLIMIT_NPROC count."""
         if self.uid is None:
             return
         deadline = time.monotonic() + wait_s
+        me = os.getpid()
         while True:
             self._kill_uid()
-            if not uid_processes(self.uid) or time.monotonic() > deadline:
+            # done when nothing runs: zombies left to the host's init (bubblewrap's reapers) are
+            # dead and hold no resources; our own zombie children are reaped by our wait4
+            left = [p for p in uid_processes(self.uid) if _alive(p) or _parent(p) == me]
+            if not left or time.monotonic() > deadline:
                 return
             time.sleep(0.01)
 
@@ -483,6 +518,31 @@ class Sandbox:
                 pass
             os._exit(0)
         os.waitpid(pid, 0)
+
+
+def _children(pid: int) -> list[int]:
+    try:
+        with open(f"/proc/{pid}/task/{pid}/children") as f:
+            return [int(c) for c in f.read().split()]
+    except (OSError, ValueError):
+        return []
+
+
+def _parent(pid: int) -> int:
+    try:
+        with open(f"/proc/{pid}/stat", "rb") as f:
+            return int(f.read().rsplit(b")", 1)[1].split()[1])
+    except (OSError, IndexError, ValueError):
+        return 0
+
+
+def _alive(pid: int) -> bool:
+    """Running (not a zombie, not gone)."""
+    try:
+        with open(f"/proc/{pid}/stat", "rb") as f:
+            return f.read().rsplit(b")", 1)[1].split()[0] != b"Z"
+    except (OSError, IndexError):
+        return False
 
 
 def uid_processes(uid: int) -> list[int]:

@@ -23,16 +23,19 @@ def tiny_judge() -> Judge:
 
 
 def sandbox_processes() -> list[int]:
-    """PIDs of live processes owned by a sandbox uid (there should be none between judgings)."""
+    """PIDs of live processes owned by a sandbox uid (there should be none between judgings).
+    Zombies are dead, not live: bubblewrap leaves its reaper to the host's init to collect."""
     pids = []
     for d in os.listdir("/proc"):
         if d.isdigit():
             try:
                 with open(f"/proc/{d}/status") as f:
-                    uid = next(int(line.split()[1]) for line in f if line.startswith("Uid:"))
-            except (OSError, StopIteration):
+                    fields = dict(line.split(":", 1) for line in f if ":" in line)
+                uid = int(fields["Uid"].split()[0])
+                zombie = fields["State"].split()[0] == "Z"
+            except (OSError, KeyError, ValueError, IndexError):
                 continue
-            if UID_BASE <= uid < UID_BASE + UID_COUNT:
+            if UID_BASE <= uid < UID_BASE + UID_COUNT and not zombie:
                 pids.append(int(d))
     return pids
 
