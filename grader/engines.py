@@ -23,7 +23,7 @@ Example:
     >>> sorted(engine_modules(["matplotlib.tri"]))
     ['matplotlib._qhull', 'scipy.spatial._qhull']
     >>> engine_modules(["triangle"])
-    {'triangle._triangle': 'Triangle'}
+    {'triangle.core': 'Triangle'}
 """
 
 from __future__ import annotations
@@ -38,7 +38,7 @@ from typing import Iterable, Sequence
 ENGINES: dict[str, tuple[tuple[str, ...], tuple[str, ...], tuple[str, ...]]] = {
     "Qhull": (("scipy.spatial", "matplotlib.tri", "qhull", "pyhull"),
               ("scipy.spatial._qhull", "matplotlib._qhull"), ("libqhull",)),
-    "Triangle": (("triangle",), ("triangle._triangle",), ("libtriangle",)),
+    "Triangle": (("triangle",), ("triangle.core",), ("libtriangle",)),
     "GEOS": (("shapely", "pygeos"), ("shapely.lib", "pygeos.lib"), ("libgeos",)),
 }
 #: Forbidden wrappers that allowed libraries import on their own (pyplot imports matplotlib.tri,

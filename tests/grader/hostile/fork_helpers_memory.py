@@ -1,7 +1,7 @@
 # expect: MLE
 # Three raw-libc forked helpers each fill 120 MB (360 MB for a 256 MB problem) while the worker
-# itself stays small and answers. Measuring only the worker, this was AC with 13 MB reported;
-# the whole sandbox's memory (its cgroup) is limited and charged now.
+# itself stays small and answers. Measuring only the worker, it was judged on its answer (WA
+# here) with 13 MB reported; the whole sandbox's memory (its cgroup) is limited and charged now.
 import ctypes
 import os
 import select

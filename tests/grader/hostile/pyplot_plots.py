@@ -1,17 +1,16 @@
 # expect: AC
-# A correct submission that imports matplotlib.pyplot (and numpy, scipy.optimize) and plots: it was
-# SV in every problem ("operation 'subprocess.Popen' is not allowed": matplotlib's font cache ran
-# fc-list, and pyplot imports the forbidden matplotlib.tri). Allowed libraries import and work.
+# A correct submission that imports matplotlib.pyplot (and numpy) and plots: it was SV in every
+# problem ("operation 'subprocess.Popen' is not allowed": matplotlib's font cache ran fc-list,
+# and pyplot imports the forbidden matplotlib.tri). Allowed libraries import and work
+# (scipy.optimize too: tests/grader/test_sandbox.py, with a load timeout for a busy machine).
 import matplotlib.pyplot as plt
 import numpy as np
-import scipy.optimize
 
 def delaunay(points):
     fig, ax = plt.subplots()
     xs = [p[0] for p in points]; ys = [p[1] for p in points]
     ax.plot(xs, ys, "o"); ax.set_title("points")
     fig.savefig("plot.png"); plt.close(fig)
-    assert abs(scipy.optimize.minimize_scalar(lambda t: (t - 1.0) ** 2).x - 1.0) < 1e-6
     assert np.allclose(np.mean(points, axis=0), [sum(xs) / len(xs), sum(ys) / len(ys)])
     from itertools import combinations
     n = len(points); out = []

@@ -9,7 +9,7 @@ import sys
 ver = f"python{sys.version_info.major}.{sys.version_info.minor}"
 PATH = os.path.join(sys.base_prefix, "lib", ver, "site-packages", "scipy", "spatial",
                     "_qhull" + importlib.machinery.EXTENSION_SUFFIXES[0])
-spec = importlib.util.spec_from_file_location("scipy.spatial._qhull", PATH)
+spec = importlib.util.spec_from_file_location("mine._qhull", PATH)  # any name ending in _qhull
 qhull = importlib.util.module_from_spec(spec)
 spec.loader.exec_module(qhull)
 

@@ -2,11 +2,11 @@
 # Another copy of the course elsewhere on the machine (a second checkout, an instructor's
 # folder): read past the audit hook with raw libc open(). Hiding was a deny-list (this checkout,
 # /root, /home), so such a copy was readable; the jail is an allow-list now.
-# tests/grader/test_sandbox.py creates /var/tmp/hostile-course-copy/... before judging this.
+# tests/grader/test_sandbox.py creates /srv/hostile-course-copy/... before judging this.
 import ctypes
 
 libc = ctypes.CDLL(None)
-PLACES = (b"/var/tmp/hostile-course-copy/course/solutions/delaunay/accepted_walk.py",
+PLACES = (b"/srv/hostile-course-copy/course/solutions/delaunay/accepted_walk.py",
           b"/srv/course/solutions/delaunay/accepted_walk.py", b"/opt/course/solutions/delaunay/accepted_walk.py")
 
 
