@@ -39,7 +39,6 @@ import ctypes
 import ctypes.util
 import fcntl
 import functools
-import hashlib
 import json
 import os
 import resource
@@ -54,6 +53,7 @@ from pathlib import Path
 from typing import Sequence
 
 from . import cgroups, engines, seccomp
+from .fontcache import matplotlib_fontlist
 
 CLONE_NEWNS = 0x00020000
 CLONE_NEWUTS = 0x04000000
@@ -193,51 +193,6 @@ def _probe_bwrap(path: str, uid: int) -> bool:
     except (OSError, subprocess.SubprocessError):
         return False
     return r.returncode == 0
-
-
-@functools.lru_cache(maxsize=1)
-def matplotlib_fontlist() -> str | None:
-    """A font cache for matplotlib, built once per matplotlib installation, listing only fonts
-    inside the Python installation (readable in the jail); None without matplotlib.
-
-    Without it, matplotlib rebuilds the cache in every fresh jail and runs ``fc-list``.
-    """
-    import importlib.util
-    spec = importlib.util.find_spec("matplotlib")
-    if spec is None or spec.origin is None:
-        return None
-    origin = os.path.dirname(spec.origin)
-    key = f"{os.path.getmtime(origin):.0f}-{hashlib.sha256(origin.encode()).hexdigest()[:12]}"
-    cache = Path(__file__).resolve().parent.parent / ".cache" / f"mpl-fontlist-{key}"
-    found = sorted(cache.glob("fontlist-v*.json")) if cache.is_dir() else []
-    if found:
-        return str(found[-1])
-    tmp = Path(tempfile.mkdtemp(prefix="mpl-fontlist-"))
-    env = {"PATH": "/usr/bin:/bin", "MPLCONFIGDIR": str(tmp), "MPLBACKEND": "Agg", "HOME": str(tmp)}
-    try:
-        subprocess.run([sys.executable, "-I", "-c", "import matplotlib.font_manager"], env=env, timeout=300,
-                       check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-        built = sorted(tmp.glob("fontlist-v*.json"))
-        if not built:
-            return None
-        data = json.loads(built[-1].read_text())
-        roots = python_roots()
-        for key_ in ("ttflist", "afmlist"):
-            data[key_] = [f for f in data.get(key_, []) if not os.path.isabs(f.get("fname", "/"))  # mpl-data's own
-                          or any(_under(os.path.realpath(f["fname"]), r) for r in roots)]
-        built[-1].write_text(json.dumps(data))
-        os.chmod(built[-1], 0o644)
-        cache.parent.mkdir(parents=True, exist_ok=True)
-        try:
-            os.rename(tmp, cache)  # atomic: a concurrent builder's copy wins, ours is removed
-        except OSError:
-            pass
-    except (OSError, subprocess.SubprocessError, ValueError):
-        return None
-    finally:
-        shutil.rmtree(tmp, ignore_errors=True)
-    found = sorted(cache.glob("fontlist-v*.json"))
-    return str(found[-1]) if found else None
 
 
 def mechanism() -> str:
