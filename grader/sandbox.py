@@ -259,6 +259,10 @@ class Sandbox:
             self.mechanism = "+".join(parts)
         else:
             self.host_workdir = tempfile.mkdtemp(prefix="grader-work-")
+            fontlist = matplotlib_fontlist()
+            if fontlist:
+                os.mkdir(os.path.join(self.host_workdir, ".matplotlib"))
+                shutil.copy(fontlist, os.path.join(self.host_workdir, ".matplotlib"))
         _last_mechanism = self.mechanism
         return self
 
@@ -372,8 +376,7 @@ class Sandbox:
             "MKL_NUM_THREADS": "1", "NUMEXPR_NUM_THREADS": "1", "PYTHONDONTWRITEBYTECODE": "1",
             "PYTHONHASHSEED": "0", "MPLBACKEND": "Agg",
         }
-        if self.root_mode:
-            env["MPLCONFIGDIR"] = MPL_DIR
+        env["MPLCONFIGDIR"] = os.path.join(home, ".matplotlib")  # holds the pre-built font cache
         return env
 
     def spawn(self, argv: Sequence[str], stdin: int, stdout: int, stderr: int,

@@ -92,6 +92,16 @@ def test_a_notebook_that_plots_with_pyplot_is_accepted(tiny_judge, tmp_path):
     assert r.verdict == "AC", [(t.verdict.value, t.message[:300]) for t in r.tests]
 
 
+def test_pyplot_works_without_root_too(monkeypatch, tiny_judge):
+    """The not-root path (a student checking their own code): no jail, but the same pre-built
+    font cache, so matplotlib does not run fc-list (a forbidden subprocess)."""
+    import grader.sandbox as sandbox
+    monkeypatch.setattr(sandbox, "is_root", lambda: False)
+    r = tiny_judge.judge_path(HOSTILE / "pyplot_plots.py")
+    assert r.verdict == "AC", [(t.verdict.value, t.message[:300]) for t in r.tests]
+    assert r.to_json()["sandbox"] == "rlimits"
+
+
 def test_allowed_libraries_import_and_work_where_their_neighbours_are_forbidden(tiny_judge):
     src = ("import matplotlib.pyplot as plt, numpy as np, scipy.optimize, scipy.linalg\n"
            "def f(xs):\n    fig, ax = plt.subplots()\n    ax.plot(xs, xs)\n    fig.savefig('p.png')\n"
