@@ -434,15 +434,15 @@ class Sandbox:
         its pid-1 reaper goes first: the kernel then kills and reaps the whole pid namespace and
         bubblewrap exits by itself, so no zombie is left to the host's init (which reaps slowly,
         about a second here, holding RLIMIT_NPROC slots meanwhile)."""
-        if self.kind == "bwrap":
-            for child in _children(pid):
-                try:
-                    os.kill(child, signal.SIGKILL)
-                except OSError:
-                    pass
-            deadline = time.monotonic() + 1.0
-            while time.monotonic() < deadline and _alive(pid):
-                time.sleep(0.002)
+        reapers = _children(pid) if self.kind == "bwrap" else []
+        for child in reapers:
+            try:
+                os.kill(child, signal.SIGKILL)
+            except OSError:
+                pass
+        deadline = time.monotonic() + 1.0
+        while reapers and time.monotonic() < deadline and _alive(pid):
+            time.sleep(0.002)
         try:
             os.killpg(pid, signal.SIGKILL)
         except OSError:
