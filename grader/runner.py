@@ -24,6 +24,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Sequence
 
+from .engines import ENGINE_API, IMPORTED_BY_LIBRARIES, engine_libraries, engine_modules
 from .sandbox import Sandbox, python_roots
 from .text import clean
 
@@ -84,7 +85,14 @@ class RunOutcome:
     idle_s: float = 0.0  #: wall time not spent computing (sleeping, blocked, waiting for a CPU)
 
 
-def _cpu_seconds(pid: int) -> float:
+def _cpu_seconds(box: Sandbox, pid: int) -> float:
+    """CPU seconds used so far by the whole sandbox (its cgroup: forked helpers included), or
+    by process ``pid`` when the sandbox has no group (not root)."""
+    if box.group is not None:
+        try:
+            return box.group.cpu_seconds()
+        except (OSError, ValueError):
+            return 0.0
     try:
         with open(f"/proc/{pid}/stat", "rb") as f:
             fields = f.read().rsplit(b")", 1)[1].split()
@@ -96,16 +104,29 @@ def _cpu_seconds(pid: int) -> float:
         return 0.0
 
 
-def _runqueue_seconds(pid: int) -> float:
-    """Time the process's main thread spent runnable but waiting for a CPU (``schedstat`` field 2)."""
-    try:
-        with open(f"/proc/{pid}/schedstat", "rb") as f:
-            return int(f.read().split()[1]) / 1e9
-    except (OSError, IndexError, ValueError):
-        return 0.0
+def _runqueue_seconds(box: Sandbox, pid: int) -> float:
+    """Time spent runnable but waiting for a CPU (``schedstat`` field 2): summed over the
+    sandbox's processes when it has a group (the jail's own pid 1 and the student's helpers),
+    else of process ``pid``."""
+    pids = box.group.pids() if box.group is not None else [pid]
+    total = 0.0
+    for p in pids or [pid]:
+        try:
+            with open(f"/proc/{p}/schedstat", "rb") as f:
+                total += int(f.read().split()[1]) / 1e9
+        except (OSError, IndexError, ValueError):
+            pass
+    return total
 
 
-def _peak_rss_mb(pid: int) -> float:
+def _peak_rss_mb(box: Sandbox, pid: int) -> float:
+    """Peak memory since the last :func:`_reset_peak`: of the whole sandbox (cgroup) when it has
+    a group, else the peak RSS of process ``pid``."""
+    if box.group is not None:
+        try:
+            return box.group.peak_memory_mb()
+        except (OSError, ValueError):
+            return 0.0
     try:
         with open(f"/proc/{pid}/status", "rb") as f:
             for line in f:
@@ -116,12 +137,27 @@ def _peak_rss_mb(pid: int) -> float:
     return 0.0
 
 
-def _reset_peak(pid: int) -> None:
+def _reset_peak(box: Sandbox, pid: int) -> None:
+    if box.group is not None:
+        try:
+            box.group.reset_peak()
+        except (OSError, ValueError):
+            pass
+        return
     try:
         with open(f"/proc/{pid}/clear_refs", "w") as f:
             f.write("5")
     except OSError:
         pass
+
+
+def _memory_limit_hit(box: Sandbox) -> bool:
+    """Did the kernel kill a process of the sandbox for memory (its cgroup's OOM killer) since
+    the last :func:`_reset_peak`? (A forked helper can die that way while the worker answers.)"""
+    try:
+        return box.group is not None and box.group.memory_limit_hit()
+    except (OSError, ValueError):
+        return False
 
 
 def _describe_signal(sig: int) -> str:
@@ -281,18 +317,15 @@ class _Child:
             else:
                 if _ == 0:
                     return
-            self.exit_status = os.waitstatus_to_exitcode(status)
+            self.exit_status = self.box.decode_exit(os.waitstatus_to_exitcode(status))
             self.proc.returncode = self.exit_status
 
     def kill(self) -> None:
         """Kill the process group, reap the child, then sweep every process of the sandbox uid."""
         if self.exit_status is None:
-            try:
-                os.killpg(self.pid, signal.SIGKILL)
-            except OSError:
-                pass
+            self.box.terminate(self.pid)
             _, status, self.rusage = os.wait4(self.pid, 0)
-            self.exit_status = os.waitstatus_to_exitcode(status)
+            self.exit_status = self.box.decode_exit(os.waitstatus_to_exitcode(status))
             self.proc.returncode = self.exit_status
         self.box.kill_all()
         self.close()
@@ -319,7 +352,9 @@ def _child_config(box: Sandbox, mode: str, entry: str, forbidden: Sequence[str],
     read_roots = python_roots() + [work, "/dev/null", "/dev/urandom", "/dev/zero", "/proc/self",
                                    "/usr/share/zoneinfo", "/etc/localtime"]
     return {"mode": mode, "entry": entry, "forbidden": list(forbidden), "filename": filename,
-            "read_roots": read_roots, "write_roots": [work]}
+            "read_roots": read_roots, "write_roots": [work], "engines": engine_modules(forbidden),
+            "engine_api": ENGINE_API, "engine_libs": engine_libraries(forbidden),
+            "library_imports": list(IMPORTED_BY_LIBRARIES)}
 
 
 def _classify_death(child: _Child, memory_mb: float, limit_mb: int) -> RunOutcome:
@@ -420,9 +455,9 @@ class FunctionWorker:
         assert child is not None
         self._next_id += 1
         rid = self._next_id
-        _reset_peak(child.pid)
-        cpu0 = _cpu_seconds(child.pid)
-        rq0 = _runqueue_seconds(child.pid)
+        _reset_peak(self.box, child.pid)
+        cpu0 = _cpu_seconds(self.box, child.pid)
+        rq0 = _runqueue_seconds(self.box, child.pid)
         wall0 = time.monotonic()
         child.send({"id": rid, "args": args})
         wall_limit = wall_limit_for(time_limit)
@@ -434,18 +469,19 @@ class FunctionWorker:
                 break
             if child.exit_status is not None or time.monotonic() >= deadline:
                 break
-            used = _cpu_seconds(child.pid) - cpu0
+            used = _cpu_seconds(self.box, child.pid) - cpu0
             if used > time_limit + 0.05:
                 cpu_exceeded = True
                 break
-            idle = time.monotonic() - wall0 - used - (_runqueue_seconds(child.pid) - rq0)
+            idle = time.monotonic() - wall0 - used - (_runqueue_seconds(self.box, child.pid) - rq0)
             if idle > min(idle_left, sleep_limit_for(time_limit)):
                 idle_exceeded = True
                 break
         wall = time.monotonic() - wall0
-        cpu = _cpu_seconds(child.pid) - cpu0 if child.exit_status is None else wall
-        waited = _runqueue_seconds(child.pid) - rq0 if child.exit_status is None else 0.0
-        mem = _peak_rss_mb(child.pid)
+        alive = child.exit_status is None
+        cpu = _cpu_seconds(self.box, child.pid) - cpu0 if alive or self.box.group else wall
+        waited = _runqueue_seconds(self.box, child.pid) - rq0 if alive else 0.0
+        mem = _peak_rss_mb(self.box, child.pid)
         time_s = round(max(cpu, 0.0), 4)
         idle = max(0.0, wall - max(cpu, 0.0) - waited)
         outcome = self._outcome(child, reply, time_limit, time_s, mem, cpu_exceeded, idle_exceeded)
@@ -455,7 +491,10 @@ class FunctionWorker:
     def _outcome(self, child: _Child, reply: dict | None, time_limit: float, time_s: float, mem: float,
                  cpu_exceeded: bool, idle_exceeded: bool) -> RunOutcome:
         overflow = _output_overflow(self.box, self.out_paths)
-        wall_limit = wall_limit_for(time_limit)
+        if _memory_limit_hit(self.box) and not (reply is not None and "violation" in reply):
+            self.stop()
+            return RunOutcome("memory", message="the submission's processes together went over the memory limit",
+                              time_s=time_s, memory_mb=max(mem, float(self.box.limits.memory_mb)))
         if reply is not None and "violation" in reply:
             self.stop()
             return RunOutcome("violation", message=reply["violation"], time_s=time_s, memory_mb=mem)
@@ -519,6 +558,8 @@ def run_stdio(box: Sandbox, source: str, input_text: str, time_limit: float, for
     fin = os.open(in_path, os.O_RDONLY)
     fout = os.open(out_path, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o600)
     ferr = os.open(err_path, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o600)
+    _reset_peak(box, 0)
+    cpu0 = _cpu_seconds(box, 0)
     try:
         child = _Child(box, config, source, fin, fout, ferr, time_limit + 1)
     finally:
@@ -538,11 +579,11 @@ def run_stdio(box: Sandbox, source: str, input_text: str, time_limit: float, for
             break
         if child.exit_status is not None:
             break
-        used = _cpu_seconds(child.pid)
+        used = _cpu_seconds(box, child.pid) - (cpu0 if box.group else 0.0)
         if used > time_limit + 0.05:
             cpu_exceeded = True
             break
-        waited = max(waited, _runqueue_seconds(child.pid))
+        waited = max(waited, _runqueue_seconds(box, child.pid))
         if time.monotonic() - wall0 - used - waited > min(idle_left, sleep_limit_for(time_limit)):
             break
     wall = time.monotonic() - wall0
@@ -554,6 +595,8 @@ def run_stdio(box: Sandbox, source: str, input_text: str, time_limit: float, for
     ru = child.rusage
     cpu = (ru.ru_utime + ru.ru_stime) if ru is not None else 0.0
     mem = (ru.ru_maxrss / 1024) if ru is not None else 0.0
+    if box.group is not None:  # the whole sandbox, forked helpers included
+        cpu, mem = max(cpu, _cpu_seconds(box, 0) - cpu0), max(mem, _peak_rss_mb(box, 0))
     time_s = round(cpu, 4)
     outcome = _stdio_outcome(box, child, time_limit, time_s, mem, timed_out, junk, out_path, err_path)
     outcome.idle_s = max(0.0, wall - cpu - waited)
@@ -569,6 +612,9 @@ def _stdio_outcome(box: Sandbox, child: _Child, time_limit: float, time_s: float
     if junk:
         return RunOutcome("bad_type", message="the program wrote on the judge's channel (protocol violation)",
                           time_s=time_s, memory_mb=mem)
+    if _memory_limit_hit(box):
+        return RunOutcome("memory", message="the program's processes together went over the memory limit",
+                          time_s=time_s, memory_mb=max(mem, float(box.limits.memory_mb)))
     if _output_overflow(box, [out_path, err_path]):
         return RunOutcome("output_limit", message=f"more than {box.limits.output_mb} MiB of output",
                           time_s=time_s, memory_mb=mem)

@@ -106,8 +106,15 @@ class JudgeResult:
             "problem": self.problem, "submission": self.submission, "verdict": self.verdict,
             "score": self.score, "max_score": self.max_score, "mode": self.mode,
             "groups": [{"name": g, "points": p, "passed": self.group_passed(g)} for g, p in self.group_points.items()],
-            "tests": [t.to_json() for t in self.tests], "judge_time_s": round(self.judge_time_s, 3), **self.extra,
+            "tests": [t.to_json() for t in self.tests], "judge_time_s": round(self.judge_time_s, 3),
+            "sandbox": _sandbox_mechanism(), **self.extra,
         }
+
+
+def _sandbox_mechanism() -> str:
+    """Which jail judged (``bwrap+cgroup-v1+seccomp``, ``namespaces+...``, ``rlimits``)."""
+    from .sandbox import mechanism  # late: verdicts stays importable without the sandbox
+    return mechanism()
 
 
 def format_table(result: JudgeResult) -> str:

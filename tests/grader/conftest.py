@@ -65,15 +65,19 @@ def sandbox_processes() -> list[int]:
 
 
 def _processes_of(uid: int) -> list[int]:
+    """Live processes of ``uid``. Zombies are dead, not live: bubblewrap leaves its reaper to
+    the host's init to collect."""
     pids = []
     for d in os.listdir("/proc"):
         if d.isdigit():
             try:
                 with open(f"/proc/{d}/status") as f:
-                    real = next(int(line.split()[1]) for line in f if line.startswith("Uid:"))
-            except (OSError, StopIteration):
+                    fields = dict(line.split(":", 1) for line in f if ":" in line)
+                real = int(fields["Uid"].split()[0])
+                zombie = fields["State"].split()[0] == "Z"
+            except (OSError, KeyError, ValueError, IndexError):
                 continue
-            if real == uid:
+            if real == uid and not zombie:
                 pids.append(int(d))
     return pids
 

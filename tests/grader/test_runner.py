@@ -36,7 +36,8 @@ def test_worker_is_reused_and_measures_each_test():
 
 
 def test_worker_restarts_after_a_crash():
-    src = "import os\ndef f(crash):\n    if crash:\n        os._exit(3)\n    return os.getpid()\n"
+    # a per-process identity: in the bubblewrap jail (its own pid namespace) every worker is pid 2
+    src = "import os, time\nSTART = time.time_ns()\ndef f(crash):\n    if crash:\n        os._exit(3)\n    return START\n"
     with Sandbox(Limits()) as box:
         w = FunctionWorker(box, src, "f", forbidden=[])
         first = w.call([False], 1).value
