@@ -20,6 +20,10 @@ expected verdict only).
 Example:
     python -m grader export-kattis delaunay /tmp/kattis --groups tiny,large   # -> /tmp/kattis/delaunay
     verifyproblem -p config data validators submissions /tmp/kattis/delaunay
+"""
+
+from __future__ import annotations
+
 import dataclasses
 import re
 import shutil
