@@ -18,7 +18,7 @@ where each goes is decided by judging it on the exported groups (``judge=False``
 expected verdict only).
 
 Example:
-    python -m grader export-kattis delaunay /tmp/kattis --groups tiny,large   # -> /tmp/kattis/delaunay
+    python -m grader export-kattis delaunay /tmp/kattis --groups tiny,large:1   # -> /tmp/kattis/delaunay
     verifyproblem -p config data validators submissions /tmp/kattis/delaunay
 """
 
@@ -55,16 +55,25 @@ def expected_verdicts(problem_id: str) -> dict[str, str]:
     return {str(k): str(v) for k, v in data.items()}
 
 
-def scored_groups(p: Problem, groups: list[str] | None = None) -> list[Group]:
-    """The hidden (non-sample) groups to export, in the problem's order; ``ValueError`` for unknown names."""
+def scored_groups(p: Problem, groups: list[str] | None = None) -> list[tuple[Group, int | None]]:
+    """The hidden (non-sample) groups to export, in the problem's order, each with how many of its
+    tests to keep (``"large:1"``: only the first test of ``large``; None: all).
+
+    ``ValueError`` for an unknown group name or a bad count."""
     hidden = [g for g in p.groups if g.name != "sample"]
     if groups is None:
-        return hidden
-    unknown = sorted(set(groups) - {g.name for g in hidden})
+        return [(g, None) for g in hidden]
+    wanted: dict[str, int | None] = {}
+    for item in groups:
+        name, _, count = item.partition(":")
+        if count and not (count.isdigit() and int(count) > 0):
+            raise ValueError(f"problem {p.id!r}: {item!r}: the number after ':' must be a positive integer")
+        wanted[name] = int(count) if count else None
+    unknown = sorted(set(wanted) - {g.name for g in hidden})
     if unknown:
         raise ValueError(f"problem {p.id!r}: no hidden group {', '.join(unknown)}; "
                          f"groups: {', '.join(g.name for g in hidden)}")
-    return [g for g in hidden if g.name in groups]
+    return [(g, wanted[g.name]) for g in hidden if g.name in wanted]
 
 
 def group_dirname(p: Problem, group: str) -> str:
@@ -72,12 +81,26 @@ def group_dirname(p: Problem, group: str) -> str:
     return f"{[g.name for g in p.groups].index(group):02d}-{group}"
 
 
-def placements(p: Problem, groups: list[Group], judge: bool = True) -> dict[str, str]:
-    """Reference solution file -> Kattis ``submissions/`` directory for a package holding ``groups``.
+def selection(p: Problem, chosen: list[tuple[Group, int | None]]) -> Problem:
+    """``p`` with only the exported groups and tests (what a judge of the package would run)."""
+    keep = {g.name: n for g, n in chosen}
+    tests, seen = [], dict.fromkeys(keep, 0)
+    for t in p.tests():
+        if t.group in keep and (keep[t.group] is None or seen[t.group] < keep[t.group]):
+            seen[t.group] += 1
+            tests.append(t)
+    q = dataclasses.replace(p, groups=[g for g, _ in chosen])
+    q.__dict__["_tests"] = tests
+    return q
 
-    With ``judge`` the non-AC solutions are judged on those groups: full marks -> ``accepted``
-    (``ValueError``: the export cannot tell it from a correct one), part -> ``partially_accepted``,
-    none -> the directory of the worst failure, ranked as problemtools' default grader does."""
+
+def placements(p: Problem, judge: bool = True) -> dict[str, str]:
+    """Reference solution file -> Kattis ``submissions/`` directory for a package holding ``p``'s
+    groups and tests (see :func:`selection`).
+
+    With ``judge`` the non-AC solutions are judged on those tests: full marks -> ``ValueError``
+    (the package cannot tell it from a correct one), part -> ``partially_accepted``, none -> the
+    directory of the worst failure, ranked as problemtools' default grader does."""
     out = {}
     for name, verdict in expected_verdicts(p.id).items():
         src = REPO / "solutions" / p.id / name
@@ -88,10 +111,10 @@ def placements(p: Problem, groups: list[Group], judge: bool = True) -> dict[str,
             continue
         from .judge import Judge
 
-        result = Judge(dataclasses.replace(p, groups=list(groups)), hide=[str(src.parent)]).judge_path(src)
+        result = Judge(p, hide=[str(src.parent)]).judge_path(src)
         if result.score == result.max_score:
-            raise ValueError(f"{p.id}: {name} (expected {verdict}) passes every exported group "
-                             f"({', '.join(g.name for g in groups)}); export a group it fails")
+            raise ValueError(f"{p.id}: {name} (expected {verdict}) passes every exported test "
+                             f"(groups {', '.join(g.name for g in p.groups)}); export a group it fails")
         if result.score > 0:
             out[name] = "partially_accepted"
         else:
@@ -109,10 +132,12 @@ def _testdata(path: Path, **settings) -> None:
 def export(problem: Problem | str, outdir: str | Path, groups: list[str] | None = None,
            with_submissions: bool = True, judge: bool = True) -> Path:
     """Write the package to ``outdir/<shortname>`` and return that path. ``groups`` limits the
-    hidden groups exported (default: all); ``judge`` places the reference solutions by judging
+    hidden groups exported (default: all; ``"large:1"`` keeps the first test of ``large``);
+    ``judge`` places the reference solutions by judging
     them (see :func:`placements`)."""
     p = load_problem(problem) if isinstance(problem, str) else problem
     chosen = scored_groups(p, groups)
+    exported = selection(p, chosen)
     dest = Path(outdir) / shortname(p.id)
     if dest.exists():
         shutil.rmtree(dest)
@@ -134,24 +159,19 @@ def export(problem: Problem | str, outdir: str | Path, groups: list[str] | None 
     data = dest / "data"
     _testdata(data, on_reject="continue", grader_flags="ignore_sample")
     _testdata(data / "sample", on_reject="continue", grader_flags="sum", accept_score=0, range="0 0")
-    total = sum(g.points for g in chosen)
+    total = sum(g.points for g, _ in chosen)
     _testdata(data / "secret", on_reject="continue", grader_flags="sum accept_if_any_accepted", range=f"0 {total}")
-    for g in chosen:
+    for g, _ in chosen:
         _testdata(data / "secret" / group_dirname(p, g.name), on_reject="break", grader_flags="min",
                   accept_score=g.points, range=f"0 {g.points}")
-    wanted = {g.name for g in chosen}
-    for t in p.tests():
-        group, stem = t.name.split("/", 1)
-        if t.group == "sample" or group == "sample":
-            base = data / "sample" / stem
-        elif t.group in wanted:
-            base = data / "secret" / group_dirname(p, t.group) / stem
-        else:
-            continue
+    samples = [t for t in p.tests() if t.group == "sample"]
+    for t in samples + exported.tests():
+        stem = t.name.split("/", 1)[1]
+        base = data / "sample" / stem if t.group == "sample" else data / "secret" / group_dirname(p, t.group) / stem
         base.with_suffix(".in").write_text(t.input_text)
         base.with_suffix(".ans").write_text(t.answer_text)
     if with_submissions:
-        for name, sub_dir in placements(p, chosen, judge=judge).items():
+        for name, sub_dir in placements(exported, judge=judge).items():
             (dest / "submissions" / sub_dir).mkdir(parents=True, exist_ok=True)
             shutil.copy(REPO / "solutions" / p.id / name, dest / "submissions" / sub_dir / name)
     return dest

@@ -127,7 +127,7 @@ def _picture(problem: Problem, result: JudgeResult) -> str:
     finally:
         plt.close(fig)
     data = base64.b64encode(buf.getvalue()).decode()
-    note = " (orange: what the message names)" + (f"; {hidden_r:,} received triangles not drawn" if hidden_r else "")
+    note = " (orange: what the message names)" + (f"; {hidden_r:,} elements of the received answer not drawn" if hidden_r else "")
     return (f'<h2>First failing test: {html.escape(bad.name)}{note}</h2>'
             f'<img alt="expected vs received" src="data:image/png;base64,{data}">')
 
