@@ -1,4 +1,4 @@
-"""Verdicts and scoring (SPEC section 5): per-test results, per-group points, the overall verdict.
+"""Verdicts and scoring: per-test results, per-group points, the overall verdict.
 
 Example:
     >>> t = TestResult("tiny/1", "tiny", Verdict.AC, 0.01)

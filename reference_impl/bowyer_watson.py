@@ -20,7 +20,8 @@ In pseudocode (compare with the tutorial's section 2.1)::
         remove the bad triangles; add (a, b, p) for every boundary edge (a, b)
     return the triangles that do not touch the vertex at infinity
 
-and fixes what the tutorial gets wrong (course SPEC section 9, items 1-4):
+and fixes the four bugs of the original tutorial's code (reproduced in
+``reference_impl/tutorial_bugs.py``):
 
 Fix 1, orientation.  The in-circle determinant says "inside" only for a
 counter-clockwise triangle (for a clockwise one its sign flips).  Every
