@@ -158,8 +158,8 @@ class Progress:
         width = 24
         fill = int(width * self.done / max(1, self.total))
         text = (f"[{'#' * fill}{'.' * (width - fill)}] {self.done}/{self.total} {el:5.1f}s {self._tests()} "
-                f"{label}")[:160]
-        self.stream.write(f"\r{text:160}")
+                f"{label}")[:110]
+        self.stream.write(f"\r{text:110}")
         self.stream.flush()
 
     def poll(self, store: ResultStore, problem: str, jobs: dict[str, str], finished: set[str]) -> None:
