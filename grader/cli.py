@@ -185,7 +185,7 @@ def build_parser() -> argparse.ArgumentParser:
     p = sub.add_parser("export-kattis", help="write a Kattis problem package")
     p.add_argument("problem")
     p.add_argument("outdir")
-    p.add_argument("--groups", help="only these hidden groups (comma-separated)")
+    p.add_argument("--groups", help="only these hidden groups (comma-separated; 'large:1' keeps the first test of large)")
     p.add_argument("--no-judge", action="store_true",
                    help="place the reference solutions by their expected verdict, without judging them")
     p.set_defaults(func=_cmd_export)
