@@ -193,13 +193,14 @@ def grade_class(problem: str, root: str | Path, db_path: str | Path, jobs: int =
                 csv_path: str | Path | None = None, report_dir: str | Path | None = None,
                 progress: bool = True) -> list[dict]:
     """Grade every student's submission for ``problem``; returns one summary dict per student."""
-    load_problem(problem)  # clear error for an unknown id
+    max_score = sum(load_problem(problem).group_points.values())  # also: a clear error for an unknown id
     todo_all = discover(root, problem)
     empty = empty_students(root, problem)
     store = ResultStore(db_path)
     todo = [j for j in todo_all if not store.is_done(j.student, problem, j.sha)]
     summaries = [{"student": j.student, "skipped": "already graded"} for j in todo_all if j not in todo]
-    summaries += [{"student": st, "verdict": "", "score": 0, "skipped": NO_SUBMISSION} for st in empty]
+    summaries += [{"student": st, "verdict": "", "score": 0, "max_score": max_score, "skipped": NO_SUBMISSION}
+                  for st in empty]
     hide = tuple(str(Path(p).resolve()) for p in (root, Path(db_path).parent, report_dir) if p)
     # materialise tests once in the parent, before workers race for it
     n_tests = len(Judge(problem).tests)
@@ -242,7 +243,7 @@ def grade_class(problem: str, root: str | Path, db_path: str | Path, jobs: int =
     if csv_path:
         store.export_csv(problem, csv_path)
         if empty:
-            _add_empty_rows(csv_path, problem, empty, n_max=load_problem(problem).group_points)
+            _add_empty_rows(csv_path, problem, empty, max_score)
     if report_dir:
         from .report import write_index
 
@@ -251,14 +252,14 @@ def grade_class(problem: str, root: str | Path, db_path: str | Path, jobs: int =
     return summaries
 
 
-def _add_empty_rows(csv_path: str | Path, problem: str, students: list[str], n_max: dict[str, int]) -> None:
+def _add_empty_rows(csv_path: str | Path, problem: str, students: list[str], max_score: int) -> None:
     """Add a score-0 row for every student folder without a submission, keeping the rows sorted."""
     with open(csv_path, newline="") as f:
         rows = list(csv.reader(f))
     head, body = rows[0], rows[1:]
     for st in students:
         safe = "'" + st if st[:1] in ("=", "+", "-", "@", "\t", "\r") else st  # no spreadsheet formulas
-        body.append([safe, problem, "0", str(sum(n_max.values())), "", "", NO_SUBMISSION])
+        body.append([safe, problem, "0", str(max_score), "", "", NO_SUBMISSION])
     with open(csv_path, "w", newline="") as f:
         csv.writer(f).writerows([head, *sorted(body, key=lambda r: r[0].lstrip("'"))])
 
