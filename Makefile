@@ -24,8 +24,13 @@ demo: setup
 test: setup
 	$(PY) -m pytest
 
+# JupyterLab refuses to run as root without --allow-root (course containers and CI run as root).
+# LAB_ARGS passes extra options, e.g. make lab LAB_ARGS="--no-browser --port=8899".
+LAB_ROOT := $(if $(filter 0,$(shell id -u)),--allow-root,)
+LAB_ARGS ?=
+
 lab: setup
-	$(VENV)/bin/jupyter lab notebooks
+	$(VENV)/bin/jupyter lab $(LAB_ROOT) $(LAB_ARGS) notebooks
 
 bench: setup
 	$(PY) benchmarks/bench_delaunay.py

@@ -56,6 +56,10 @@ class SandboxViolation(BaseException):
 
 
 def _send(obj):
+    try:  # what the submission printed so far reaches its file before the reply (shown for failing tests)
+        sys.stdout.flush()
+    except BaseException:  # noqa: BLE001 - a flood (EFBIG) is judged by the parent
+        pass
     data = (json.dumps(obj, allow_nan=True, separators=(",", ":")) + "\n").encode()
     view = memoryview(data)
     while view:

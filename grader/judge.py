@@ -28,6 +28,7 @@ from .text import clean
 from .verdicts import JudgeResult, TestResult, Verdict
 
 PREVIEW_MAX_LINES = 24
+PRINTED_MAX_BYTES = 2000  #: function mode: a failing test's print() output shown up to this many bytes
 _CE_TYPES = {"SyntaxError", "IndentationError", "TabError", "ImportError", "ModuleNotFoundError", "MissingEntry"}
 _cover_cache: dict[tuple[str, ...], list[str]] = {}
 
@@ -60,6 +61,30 @@ def preview(test: TestCase) -> str:
     """The test's input for the student when it is small enough to read."""
     lines = test.input_text.splitlines()
     return test.input_text if len(lines) <= PREVIEW_MAX_LINES else ""
+
+
+def _file_size(path: str) -> int:
+    try:
+        return os.path.getsize(path)
+    except OSError:
+        return 0
+
+
+def _printed_since(path: str, offset: int) -> tuple[str, int]:
+    """What the function-mode worker printed to stdout after ``offset`` (capped), and the new size."""
+    size = _file_size(path)
+    if size < offset:  # the worker was restarted: its stdout file starts over
+        offset = 0
+    if size == offset:
+        return "", size
+    with open(path, "rb") as f:
+        f.seek(offset)
+        data = f.read(PRINTED_MAX_BYTES + 1)
+    text = data[:PRINTED_MAX_BYTES].decode("utf-8", "replace")
+    text = "".join(c if c.isprintable() or c in "\n\t" else "?" for c in text)
+    if len(data) > PRINTED_MAX_BYTES:
+        text += f"\n... ({size - offset - PRINTED_MAX_BYTES} more bytes not shown)"
+    return text, size
 
 
 def _verdict_for(outcome: RunOutcome) -> tuple[Verdict, str]:
@@ -183,9 +208,11 @@ class Judge:
         test = self.tests[k]
         chk = self.problem.checker
         idle = 0.0
+        before = 0
         try:
             args, expected = self._test_data(k)
             if worker is not None:
+                before = _file_size(worker.out_paths[0])
                 outcome = worker.call(args, self.problem.time_limit, idle_left=idle_left)
             else:
                 outcome = run_stdio(box, sub.source, test.input_text, self.problem.time_limit,
@@ -214,6 +241,10 @@ class Judge:
                            f"judge error: {type(exc).__name__}: {exc}\n{traceback.format_exc(limit=3)}")
         if r.verdict not in (Verdict.AC, Verdict.SKIPPED):
             r.input_preview = preview(test)
+            if worker is not None and r.verdict != Verdict.JE:
+                printed, _ = _printed_since(worker.out_paths[0], before)
+                if printed.strip():
+                    r.message += f"\n--- your print() output in this test ---\n{printed}"
         r.message = clean(r.message, 4000, newlines=True)  # checker messages quote student data
         return r, idle
 

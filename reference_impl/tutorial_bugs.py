@@ -1,4 +1,5 @@
-"""The tutorial's Bowyer-Watson, reproduced on purpose: an exhibit of what goes wrong.
+"""The original Bowyer-Watson tutorial's code (the one this course corrects), reproduced on
+purpose: an exhibit of what goes wrong.
 
 Run the examples:  python -m doctest reference_impl/tutorial_bugs.py
 
