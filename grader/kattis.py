@@ -27,6 +27,7 @@ from __future__ import annotations
 import dataclasses
 import re
 import shutil
+import sys
 from pathlib import Path
 
 import yaml
@@ -94,13 +95,15 @@ def selection(p: Problem, chosen: list[tuple[Group, int | None]]) -> Problem:
     return q
 
 
-def placements(p: Problem, judge: bool = True) -> dict[str, str]:
+def placements(p: Problem, judge: bool = True, partial: bool = False) -> dict[str, str]:
     """Reference solution file -> Kattis ``submissions/`` directory for a package holding ``p``'s
     groups and tests (see :func:`selection`).
 
     With ``judge`` the non-AC solutions are judged on those tests: full marks -> ``ValueError``
-    (the package cannot tell it from a correct one), part -> ``partially_accepted``, none -> the
-    directory of the worst failure, ranked as problemtools' default grader does."""
+    (the package cannot tell it from a correct one), or, when only some groups are exported
+    (``partial``), the solution is left out with a note on stderr (the group that kills it was not
+    exported); part -> ``partially_accepted``, none -> the directory of the worst failure, ranked
+    as problemtools' default grader does."""
     out = {}
     for name, verdict in expected_verdicts(p.id).items():
         src = REPO / "solutions" / p.id / name
@@ -112,6 +115,11 @@ def placements(p: Problem, judge: bool = True) -> dict[str, str]:
         from .judge import Judge
 
         result = Judge(p, hide=[str(src.parent)]).judge_path(src)
+        if result.score == result.max_score and partial:
+            print(f"export-kattis: {name} left out of submissions/: it passes every exported group "
+                  f"({', '.join(g.name for g in p.groups)}); the group that kills it is not exported",
+                  file=sys.stderr)
+            continue
         if result.score == result.max_score:
             raise ValueError(f"{p.id}: {name} (expected {verdict}) passes every exported test "
                              f"(groups {', '.join(g.name for g in p.groups)}); export a group it fails")
@@ -171,7 +179,7 @@ def export(problem: Problem | str, outdir: str | Path, groups: list[str] | None 
         base.with_suffix(".in").write_text(t.input_text)
         base.with_suffix(".ans").write_text(t.answer_text)
     if with_submissions:
-        for name, sub_dir in placements(exported, judge=judge).items():
+        for name, sub_dir in placements(exported, judge=judge, partial=groups is not None).items():
             (dest / "submissions" / sub_dir).mkdir(parents=True, exist_ok=True)
             shutil.copy(REPO / "solutions" / p.id / name, dest / "submissions" / sub_dir / name)
     return dest
