@@ -31,6 +31,7 @@ import nbformat
 import yaml
 
 from .problems import Group, Problem, list_problems, load_problem, problems_root
+from .sample_check import is_sample_group
 
 SOLUTIONS = Path(__file__).resolve().parent.parent / "solutions"
 SOLUTION_ID = "solution"
@@ -45,11 +46,6 @@ def group_cell_id(group: str) -> str:
     'group_large'
     """
     return "group_" + _GRADE_ID_BAD.sub("_", group)
-
-
-def is_sample_group(group: Group) -> bool:
-    """Sample groups are public (committed under ``data/sample``) and worth no points."""
-    return group.points == 0 and bool(group.data) and "sample" in Path(group.data).parts
 
 
 def scored_groups(problem: Problem) -> list[Group]:

@@ -38,7 +38,8 @@ from nbgrader.plugins import LateSubmissionPlugin
 from nbgrader.preprocessors import NbGraderPreprocessor
 from traitlets import Unicode
 
-from .course_notebooks import CHECK_ID, group_cell_id, is_sample_group
+from .course_notebooks import CHECK_ID, group_cell_id
+from .sample_check import is_sample_group
 from .judge import Judge
 from .problems import Problem, load_problem
 from .store import ResultStore

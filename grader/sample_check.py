@@ -23,10 +23,15 @@ import time
 from pathlib import Path
 
 from .judge import Judge
-from .problems import Problem, load_problem
+from .problems import Group, Problem, load_problem
 from .verdicts import DESCRIPTIONS, JudgeResult, Verdict
 
 MAX_DRAW_ITEMS = 3000
+
+
+def is_sample_group(group: Group) -> bool:
+    """Sample groups are public (committed under ``data/sample``) and worth no points."""
+    return group.points == 0 and bool(group.data) and "sample" in Path(group.data).parts
 
 
 def sample_problem(problem: Problem) -> Problem:
@@ -35,8 +40,6 @@ def sample_problem(problem: Problem) -> Problem:
     >>> [g.name for g in sample_problem(load_problem("delaunay")).groups]
     ['sample']
     """
-    from .course_notebooks import is_sample_group
-
     groups = [g for g in problem.groups if is_sample_group(g)]
     if not groups:
         raise ValueError(f"problem {problem.id!r} has no sample group (data/sample)")
