@@ -183,7 +183,8 @@ def gradebook_scores(root: Path, problem_id: str) -> dict[str, dict]:
                 out[student.id] = {"score": 0.0, "raw": 0.0, "penalty": 0.0, "manual": [], "cells": {}}
                 continue
             nb = sub.notebooks[0]
-            out[sub.student.id] = {"score": sub.score, "raw": nb.score, "penalty": nb.late_submission_penalty or 0.0,
+            penalty = nb.late_submission_penalty or 0.0
+            out[sub.student.id] = {"score": nb.score - penalty, "raw": nb.score, "penalty": nb.late_submission_penalty or 0.0,
                                    "manual": [g.manual_score for g in nb.grades if g.manual_score is not None],
                                    "cells": {g.name: g.auto_score for g in nb.grades}}
     return out

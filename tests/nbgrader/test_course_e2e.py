@@ -16,6 +16,7 @@ import csv
 import os
 import re
 import shutil
+import time
 from datetime import datetime, timedelta, timezone
 
 import pytest
@@ -40,10 +41,14 @@ def graded(tmp_path_factory):
     course.nbgrader("collect", PROBLEM)
     twin = tmp / "twin"
     shutil.copytree(course.root, twin)  # the same class, for the parallel path
+    t0 = time.perf_counter()
     course.nbgrader("autograde", PROBLEM)
+    t1 = time.perf_counter()
+    assert grader_main(["grade", PROBLEM, str(twin / "submitted"), "--nbgrader", "--jobs", "2"]) == 0
+    t2 = time.perf_counter()
+    print(f"autograde one by one {t1 - t0:.1f} s, grade --nbgrader --jobs 2 {t2 - t1:.1f} s")  # shown with -s
     course.nbgrader("generate_feedback", PROBLEM)
     course.nbgrader("export", "--to", str(tmp / "grades.csv"))
-    assert grader_main(["grade", PROBLEM, str(twin / "submitted"), "--nbgrader", "--jobs", "2"]) == 0
     return course, twin, tmp
 
 
@@ -126,3 +131,15 @@ def test_feedback_shows_verdicts_not_hidden_inputs(graded):
     assert "group tiny" in wrong and "WA" in wrong
     right = (course.root / "feedback" / "right" / PROBLEM / f"{PROBLEM}.html").read_text()
     assert "all 4 tests accepted" in right
+
+
+def test_student_edition_releases_what_nbgrader_releases(graded):
+    """The student edition's notebooks are nbgrader's own release (same cells, stubs, checksums)."""
+    import nbformat
+
+    from grader.student_edition import release_notebook
+
+    course, _, _ = graded
+    ours = release_notebook(nbformat.read(course.root / "source" / PROBLEM / f"{PROBLEM}.ipynb", 4))
+    theirs = nbformat.read(course.root / "release" / PROBLEM / f"{PROBLEM}.ipynb", 4)
+    assert [(c.source, c.metadata) for c in ours.cells] == [(c.source, c.metadata) for c in theirs.cells]
