@@ -27,7 +27,8 @@ from grader.nbgrader_autograde import late_factor, set_exam_deadline
 from grader.problems import load_problem
 
 PROBLEM = "bowyer-watson-timed"
-pytestmark = pytest.mark.skipif(os.geteuid() != 0, reason="grading a class needs root (the sandbox drops to an unprivileged uid)")
+pytestmark = [pytest.mark.slow,
+              pytest.mark.skipif(os.geteuid() != 0, reason="grading a class needs root (the sandbox drops to an unprivileged uid)")]
 
 
 @pytest.fixture(scope="module")
