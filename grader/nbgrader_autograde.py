@@ -259,10 +259,13 @@ def grade_course(problem_id: str, submitted: str | Path, jobs: int = 1, autograd
     hide = (str(submitted), str(course_root))
     out = []
     with ProcessPoolExecutor(max_workers=max(1, jobs)) as pool:
-        futures = [pool.submit(_judge_job, problem_id, s, str(p), str(store_path), hide)
-                   for s, p in _collected(submitted, problem_id)]
+        futures = {pool.submit(_judge_job, problem_id, s, str(p), str(store_path), hide): s
+                   for s, p in _collected(submitted, problem_id)}
         for fut in as_completed(futures):
-            out.append(fut.result())
+            try:
+                out.append(fut.result())
+            except Exception as exc:  # noqa: BLE001 - a judge fault; nbgrader autograde judges it again
+                out.append({"student": futures[fut], "verdict": "JE", "error": f"{type(exc).__name__}: {exc}"})
     if autograde:
         run_nbgrader(course_root, "autograde", problem_id, "--force")
     return sorted(out, key=lambda s: s["student"])
