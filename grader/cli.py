@@ -73,7 +73,12 @@ def _cmd_judge(a: argparse.Namespace) -> int:
 def _cmd_grade(a: argparse.Namespace) -> int:
     from .classgrade import grade_class
 
-    summaries = grade_class(a.problem, a.submissions, a.db, jobs=a.jobs, scheduler=a.scheduler, csv_path=a.csv,
+    if a.nbgrader:  # SUBMISSIONS is nbgrader's submitted/; results go into its gradebook
+        from .nbgrader_autograde import grade_course
+
+        summaries = grade_course(a.problem, a.submissions, jobs=a.jobs)
+    else:
+        summaries = grade_class(a.problem, a.submissions, a.db, jobs=a.jobs, scheduler=a.scheduler, csv_path=a.csv,
                             report_dir=a.reports, progress=not a.quiet)
     if a.json:
         print(json.dumps(summaries, indent=1))
@@ -167,6 +172,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--scheduler", help="Dask distributed scheduler address")
     p.add_argument("--json", action="store_true")
     p.add_argument("--quiet", action="store_true", help="no progress bar")
+    p.add_argument("--nbgrader", action="store_true",
+                   help="SUBMISSIONS is an nbgrader course's submitted/ dir: judge in parallel, then nbgrader autograde")
     p.set_defaults(func=_cmd_grade)
     p = sub.add_parser("timed", help="timed attempts: start / status / submit")
     p.add_argument("action", choices=["start", "status", "submit"])
