@@ -8,7 +8,7 @@ VENV   ?= .venv
 PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed
 
-.PHONY: setup demo test lab bench clean
+.PHONY: setup demo test lab bench clean chromium
 
 setup: $(STAMP)
 
@@ -21,13 +21,19 @@ $(STAMP): pyproject.toml
 demo: setup
 	$(PY) -m reference_impl demo
 
-test: setup
+test: setup chromium
 	$(PY) -m pytest
 
 # JupyterLab refuses to run as root without --allow-root (course containers and CI run as root).
 # LAB_ARGS passes extra options, e.g. make lab LAB_ARGS="--no-browser --port=8899".
 LAB_ROOT := $(if $(filter 0,$(shell id -u)),--allow-root,)
 LAB_ARGS ?=
+
+# The browser test drives Debian's chromium (Playwright never downloads a browser here).
+chromium:
+	@command -v chromium >/dev/null 2>&1 || { command -v apt-get >/dev/null 2>&1 && [ "$$(id -u)" = 0 ] \
+	  && apt-get update -qq && apt-get install -y -qq chromium; } \
+	  || echo "chromium is not installed: tests/browser will be skipped (apt-get install chromium)"
 
 lab: setup
 	$(VENV)/bin/jupyter lab $(LAB_ROOT) $(LAB_ARGS) notebooks

@@ -1,0 +1,316 @@
+"""The point picker: click to add a point, drag to move it, click it to remove it.
+
+Run the examples:  python -m doctest reference_impl/kit/picker.py
+
+The picture is an ``ipywidgets.Image`` rendered by matplotlib's Agg backend
+(``render.Canvas``); ``ipyevents`` reports mouse events on it in image pixels,
+which ``Canvas.to_data`` maps back to coordinates.  A press on empty space adds
+a point on release; a press on a point followed by a move drags it; a press and
+release on a point without moving removes it.  Every change is undoable and
+redraws the triangulation (by default the Delaunay triangulation; pass
+``draw(ax, points)`` to draw something else, e.g. a convex hull or Voronoi cells).
+
+>>> p = PointPicker()
+>>> p.load_preset("tutorial"); p.points.tolist()
+[[1.0, 1.0], [3.0, 2.0], [5.0, 1.0], [4.0, 4.0]]
+>>> len(p.triangles)
+3
+>>> p.add_point(3.5, 2.5); len(p.triangles)     # inside the hull: one triangle becomes three
+5
+>>> p.undo(); len(p.points)
+4
+>>> p.remove_point(0); p.move_point(0, 3.0, 1.5); p.points.tolist()
+[[3.0, 1.5], [5.0, 1.0], [4.0, 4.0]]
+"""
+from __future__ import annotations
+
+import math
+from typing import Any, Callable, Mapping
+
+import ipywidgets as widgets
+import numpy as np
+
+from reference_impl.bowyer_watson import TUTORIAL_POINTS
+from reference_impl.delaunay import Delaunay
+from reference_impl.points import as_points
+
+from .render import Canvas, draw_points, draw_triangles
+from .widget import KitWidget, button, png_image
+
+__all__ = ["PointPicker", "PRESETS", "preset_points"]
+
+Bounds = tuple[float, float, float, float]
+
+
+def _grid(bounds: Bounds, n: int) -> np.ndarray:
+    k = max(2, int(round(math.sqrt(n))))
+    x0, y0, x1, y1 = bounds
+    xs = np.linspace(x0 + 0.15 * (x1 - x0), x1 - 0.15 * (x1 - x0), k)
+    ys = np.linspace(y0 + 0.15 * (y1 - y0), y1 - 0.15 * (y1 - y0), k)
+    return np.array([(x, y) for y in ys for x in xs])
+
+
+def _circle(bounds: Bounds, n: int) -> np.ndarray:
+    x0, y0, x1, y1 = bounds
+    cx, cy, r = (x0 + x1) / 2, (y0 + y1) / 2, 0.38 * min(x1 - x0, y1 - y0)
+    # the 8 "Pythagorean" points of a 5-circle are exactly cocircular; more points use angles
+    if n <= 12:
+        unit = [(5, 0), (4, 3), (3, 4), (0, 5), (-3, 4), (-4, 3), (-5, 0), (-4, -3), (-3, -4),
+                (0, -5), (3, -4), (4, -3)]
+        return np.array([(cx + r * u / 5, cy + r * v / 5) for u, v in unit[:max(4, n)]])
+    t = np.linspace(0, 2 * np.pi, n, endpoint=False)
+    return np.column_stack([cx + r * np.cos(t), cy + r * np.sin(t)])
+
+
+def _collinear(bounds: Bounds, n: int) -> np.ndarray:
+    x0, y0, x1, y1 = bounds
+    xs = np.linspace(x0 + 0.1 * (x1 - x0), x1 - 0.1 * (x1 - x0), max(3, n))
+    return np.column_stack([xs, np.full(len(xs), (y0 + y1) / 2)])   # exactly collinear: one y
+
+
+def _duplicates(bounds: Bounds, n: int) -> np.ndarray:
+    x0, y0, x1, y1 = bounds
+    w, h = x1 - x0, y1 - y0
+    base = [(x0 + 0.2 * w, y0 + 0.2 * h), (x0 + 0.8 * w, y0 + 0.3 * h), (x0 + 0.5 * w, y0 + 0.8 * h),
+            (x0 + 0.45 * w, y0 + 0.45 * h)]
+    return np.array(base + base[:2])   # two points given twice
+
+
+def _random(bounds: Bounds, n: int, seed: int = 0) -> np.ndarray:
+    x0, y0, x1, y1 = bounds
+    u = np.random.default_rng(seed).random((n, 2))
+    return np.column_stack([x0 + (0.05 + 0.9 * u[:, 0]) * (x1 - x0), y0 + (0.05 + 0.9 * u[:, 1]) * (y1 - y0)])
+
+
+PRESETS: dict[str, Callable[[Bounds, int], np.ndarray]] = {
+    "tutorial": lambda bounds, n: np.array(TUTORIAL_POINTS),   # the dry-run example
+    "grid": _grid,
+    "circle": _circle,
+    "collinear": _collinear,
+    "duplicates": _duplicates,
+    "random": _random,
+}
+"""Preset point sets: name -> f(bounds, n) -> (k, 2) points ("tutorial" ignores both)."""
+
+
+def preset_points(name: str, bounds: Bounds = (0, 0, 1, 1), n: int = 16) -> np.ndarray:
+    """The points of a preset.
+
+    >>> preset_points("grid", n=9).shape, preset_points("duplicates").shape
+    ((9, 2), (6, 2))
+    >>> preset_points("nope")
+    Traceback (most recent call last):
+    ...
+    ValueError: unknown preset 'nope'; choose from tutorial, grid, circle, collinear, duplicates, random
+    """
+    if name not in PRESETS:
+        raise ValueError(f"unknown preset {name!r}; choose from {', '.join(PRESETS)}")
+    return np.asarray(PRESETS[name](tuple(bounds), n), dtype=float).reshape(-1, 2)
+
+
+def delaunay_triangles(points) -> np.ndarray:
+    """The Delaunay triangles of the points ((0, 3) when there are none).
+
+    >>> delaunay_triangles([(0, 0), (1, 0), (0, 1)]).tolist()
+    [[0, 1, 2]]
+    """
+    P = as_points(points)
+    if len(P) < 3:
+        return np.zeros((0, 3), dtype=np.int64)
+    return np.asarray(Delaunay(P).simplices, dtype=np.int64).reshape(-1, 3)
+
+
+def draw_delaunay(ax, points) -> None:
+    """The picker's default picture: the Delaunay triangulation and the points."""
+    draw_triangles(ax, points, delaunay_triangles(points))
+    draw_points(ax, points, labels=len(points) <= 30)
+
+
+class PointPicker(KitWidget):
+    """Click to add, drag to move, click a point to remove; presets, undo, clear; live redraw.
+
+    ``draw(ax, points)`` draws the picture (default: ``draw_delaunay``);
+    ``presets`` adds or overrides presets (name -> points, or f(bounds, n));
+    ``on_change(picker)`` runs after every change.
+    """
+
+    HIT_PIXELS = 9.0
+    """A press closer than this (in image pixels) to a point grabs that point."""
+
+    def __init__(self, points=(), *, draw: Callable[[Any, np.ndarray], None] | None = None,
+                 presets: Mapping[str, Any] | None = None, bounds: Bounds = (0, 0, 1, 1),
+                 on_change: Callable[["PointPicker"], None] | None = None, n: int = 16,
+                 size: tuple[int, int] = (440, 400), title: str = "") -> None:
+        self._points = as_points(points).reshape(-1, 2) if len(points) else np.zeros((0, 2))
+        self._draw = draw or draw_delaunay
+        self.presets: dict[str, Any] = dict(PRESETS)
+        for name, value in (presets or {}).items():
+            self.presets[name] = value
+        self.bounds: Bounds = tuple(float(v) for v in bounds)  # type: ignore[assignment]
+        self.on_change = on_change
+        self.n = n
+        self.title = title
+        self._history: list[np.ndarray] = []
+        self._press: tuple[int | None, float, float] | None = None
+        self._moved = False
+        self.canvas = Canvas(*size)
+        self.image = png_image(size[0])
+        self.image.add_class("kit-picker-image")
+        self.preset = widgets.Dropdown(options=["(choose a preset)"] + list(self.presets),
+                                       description="preset", layout=widgets.Layout(width="16em"))
+        self.undo_button = button("undo", "undo", "7em")
+        self.clear_button = button("clear", "trash", "7em")
+        self.status = widgets.HTML()
+        super().__init__([widgets.HBox([self.preset, self.undo_button, self.clear_button]),
+                          self.image, self.status])
+        self.add_class("kit-point-picker")
+        self.preset.observe(self.guard(self._on_preset), names="value")
+        self.undo_button.on_click(self.guard(lambda _: self.undo()))
+        self.clear_button.on_click(self.guard(lambda _: self.clear()))
+        self._events = self._attach_events()
+        self.triangles = np.zeros((0, 3), dtype=np.int64)
+        self._fit_view(self._points)
+        self._refresh(notify=False)
+
+    def _attach_events(self):
+        try:
+            from ipyevents import Event
+        except ImportError:  # the widget still works from code, only clicks need ipyevents
+            return None
+        clicks = Event(source=self.image, watched_events=["mousedown", "mouseup"],
+                       prevent_default_action=True)
+        clicks.on_dom_event(self.guard(self.handle_event))
+        moves = Event(source=self.image, watched_events=["mousemove"], prevent_default_action=True,
+                      throttle_or_debounce="throttle", wait=40)
+        moves.on_dom_event(self.guard(self.handle_event))
+        return (clicks, moves)
+
+    # -- the state
+    @property
+    def points(self) -> np.ndarray:
+        """The points, an (n, 2) float array (a copy)."""
+        return self._points.copy()
+
+    def _change(self, new: np.ndarray, *, record: bool = True) -> None:
+        if record:
+            self._history.append(self._points)
+        self._points = np.asarray(new, dtype=float).reshape(-1, 2)
+        self._refresh()
+
+    def add_point(self, x: float, y: float) -> None:
+        """Add the point (x, y)."""
+        self._change(np.vstack([self._points, as_points([(x, y)])]))
+
+    def move_point(self, i: int, x: float, y: float, *, record: bool = True) -> None:
+        """Move point ``i`` to (x, y)."""
+        self._check_index(i)
+        new = self._points.copy()
+        new[i] = as_points([(x, y)])[0]
+        self._change(new, record=record)
+
+    def remove_point(self, i: int) -> None:
+        """Remove point ``i`` (later points shift down by one)."""
+        self._check_index(i)
+        self._change(np.delete(self._points, i, axis=0))
+
+    def set_points(self, points) -> None:
+        """Replace all points (undoable)."""
+        P = as_points(points) if len(points) else np.zeros((0, 2))
+        self._change(P.reshape(-1, 2))
+
+    def undo(self) -> None:
+        """Go back one change (nothing happens when there is none)."""
+        if self._history:
+            self._change(self._history.pop(), record=False)
+
+    def clear(self) -> None:
+        """Remove every point (undoable)."""
+        self._change(np.zeros((0, 2)))
+
+    def load_preset(self, name: str, n: int | None = None) -> None:
+        """Replace the points by a preset (see ``PRESETS``); the view fits the points."""
+        if name not in self.presets:
+            raise ValueError(f"unknown preset {name!r}; choose from {', '.join(self.presets)}")
+        value = self.presets[name]
+        P = value(self.bounds, n or self.n) if callable(value) else value
+        P = np.asarray(P, dtype=float).reshape(-1, 2)
+        self._fit_view(P)
+        self.set_points(P)
+
+    def _fit_view(self, P: np.ndarray) -> None:
+        """Widen the view to whole units around the points when some are outside it."""
+        x0, y0, x1, y1 = self.bounds
+        if len(P) and (P[:, 0].min() < x0 or P[:, 0].max() > x1 or P[:, 1].min() < y0 or P[:, 1].max() > y1):
+            lo, hi = np.floor(P.min(axis=0)) - 1, np.ceil(P.max(axis=0)) + 1
+            self.bounds = (float(lo[0]), float(lo[1]), float(hi[0]), float(hi[1]))
+
+    def _check_index(self, i: int) -> None:
+        if not 0 <= int(i) < len(self._points):
+            raise ValueError(f"no point {i}: the picker has {len(self._points)} points")
+
+    # -- mouse events (ipyevents), in image pixels
+    def point_at(self, px: float, py: float) -> int | None:
+        """The index of the point drawn within ``HIT_PIXELS`` of pixel (px, py), or ``None``."""
+        best, best_d = None, self.HIT_PIXELS
+        for i, (x, y) in enumerate(self._points.tolist()):
+            qx, qy = self.canvas.to_pixel(x, y)
+            d = math.hypot(qx - px, qy - py)
+            if d <= best_d:
+                best, best_d = i, d
+        return best
+
+    def handle_event(self, event: Mapping[str, Any]) -> None:
+        """React to an ipyevents mouse event (``type``, ``dataX``, ``dataY`` in image pixels)."""
+        kind = event.get("type")
+        if "dataX" not in event or "dataY" not in event:
+            return
+        px, py = float(event["dataX"]), float(event["dataY"])
+        if kind == "mousedown":
+            self._press = (self.point_at(px, py), px, py)
+            self._moved = False
+        elif kind == "mousemove" and self._press is not None and self._press[0] is not None:
+            i, sx, sy = self._press
+            if not self._moved and math.hypot(px - sx, py - sy) < 3:
+                return
+            if not self._moved:
+                self._history.append(self._points)   # one undo step for the whole drag
+            self._moved = True
+            self.move_point(i, *self.canvas.to_data(px, py), record=False)
+        elif kind == "mouseup" and self._press is not None:
+            i, sx, sy = self._press
+            self._press = None
+            if i is None:
+                self.add_point(*self.canvas.to_data(sx, sy))
+            elif self._moved:
+                self.move_point(i, *self.canvas.to_data(px, py), record=False)
+            else:
+                self.remove_point(i)
+
+    def _on_preset(self, change) -> None:
+        if change["new"] in self.presets:
+            self.load_preset(change["new"])
+
+    # -- drawing
+    def _render(self) -> bytes:
+        ax = self.canvas.clear(bounds=self.bounds, title=self.title)
+        self._draw(ax, self._points)
+        ax.set_xlim(self.bounds[0], self.bounds[2])
+        ax.set_ylim(self.bounds[1], self.bounds[3])
+        return self.canvas.png()
+
+    def _refresh(self, notify: bool = True) -> None:
+        self.triangles = delaunay_triangles(self._points)
+        self.image.value = self._render()
+        distinct = len(np.unique(self._points, axis=0)) if len(self._points) else 0
+        self.status.value = (f'<span class="kit-status">{len(self._points)} points '
+                             f'({distinct} distinct), {len(self.triangles)} Delaunay triangles</span>')
+        if notify and self.on_change is not None:
+            self.on_change(self)
+
+    def static_png(self) -> bytes:
+        return bytes(self.image.value)
+
+    def static_text(self) -> str:
+        return (f"PointPicker{': ' + self.title if self.title else ''} ({len(self._points)} points, "
+                f"{len(self.triangles)} Delaunay triangles; click to add, drag to move, click a point to remove)")
+

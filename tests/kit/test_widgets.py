@@ -1,0 +1,325 @@
+"""Tests of the lesson kit (reference_impl/kit/): widget state and callbacks, without a browser.
+
+    .venv/bin/python -m pytest tests/kit -q
+
+Widgets are driven the way a browser drives them: ``button.click()`` fires the
+on_click callbacks, setting ``slider.value`` fires the observers, and
+``PointPicker.handle_event`` receives the dictionaries ipyevents sends
+(``type``, ``dataX``, ``dataY`` in image pixels).  Pictures are checked to be
+PNGs of the promised size that change when the state changes.  Oracles: the
+triangles a widget shows are compared with scipy.spatial.Delaunay (general
+position), with the exact checker ``verify.check_delaunay`` and with the
+library's trace; the quiz's answers with a brute-force in-circle test on
+Python integers (``exact_oracle``).
+"""
+from __future__ import annotations
+
+import base64
+
+import numpy as np
+import pytest
+from scipy.spatial import Delaunay as ScipyDelaunay
+
+from exact_oracle import canon, exact, incircle as exact_incircle, orient as exact_orient
+from reference_impl import bowyer_watson
+from reference_impl.flips import validate_triangulation
+from reference_impl.kit import MeasurePanel, PointPicker, PredictReveal, PredictRevealMany, StepPlayer, pick, quick_mode
+from reference_impl.kit.player import BOWYER_WATSON_PSEUDOCODE, scrambled_triangulation
+from reference_impl.kit.quiz import bad_triangles_quiz, locally_delaunay_quiz
+from reference_impl.kit.render import Canvas, png_size
+from reference_impl.verify import check_delaunay
+
+TUTORIAL = [(1, 1), (3, 2), (5, 1), (4, 4)]
+
+
+def scipy_canon(points) -> set:
+    d = ScipyDelaunay(np.asarray(points, dtype=float))
+    P = np.asarray(points, dtype=float)
+    rows = []
+    for a, b, c in d.simplices.tolist():     # scipy does not promise counter-clockwise rows
+        if exact_orient(*exact(P[[a, b, c]])) < 0:
+            b, c = c, b
+        rows.append((a, b, c))
+    return canon(rows)
+
+
+def png_of(bundle: dict) -> bytes:
+    return base64.b64decode(bundle["image/png"])
+
+
+# ----------------------------------------------------------------------------- render
+def test_canvas_pixel_mapping_round_trips_and_png_has_the_promised_size():
+    c = Canvas(width=300, height=200)
+    c.clear(bounds=(-2, -1, 5, 3))
+    for x, y in [(-2, -1), (0, 0), (4.5, 2.5), (1.25, 0.75)]:
+        px, py = c.to_pixel(x, y)
+        assert 0 <= px <= 300 and 0 <= py <= 200
+        assert np.allclose(c.to_data(px, py), (x, y), atol=1e-9)
+    # y grows downwards in image pixels
+    assert c.to_pixel(0, 2)[1] < c.to_pixel(0, 0)[1]
+    assert png_size(c.png()) == (300, 200)
+
+
+# ----------------------------------------------------------------------------- player
+def test_bowyer_watson_player_steps_through_the_trace_and_highlights_each_phase():
+    p = StepPlayer.bowyer_watson(TUTORIAL)
+    steps = []
+    bowyer_watson(TUTORIAL, trace=steps, order="input")
+    inserting = [s for s in steps if s.bad]
+    assert len(p.steps) == 2 + 4 * len(inserting)        # start-up, then 4 phases per insertion
+    seen_lines, seen_images = [], set()
+    for k in range(len(p.steps)):
+        assert p.index == k
+        seen_lines.append(p.current_line)
+        seen_images.add(bytes(p.image.value))
+        # the highlighted pseudocode line is the current phase's, and only that one
+        highlighted = [key for key, _ in BOWYER_WATSON_PSEUDOCODE
+                       if f'data-key="{key}" style="background' in p.code.value]
+        assert highlighted == [p.current_line]
+        p.next.click()
+    assert p.index == len(p.steps) - 1                     # next on the last step stays there
+    assert seen_lines[:2] == ["start", "start"]
+    assert seen_lines[2:6] == ["locate", "bad", "boundary", "new"]
+    assert len(seen_images) == len(p.steps)               # every step draws a different picture
+    last = p.steps[-1]
+    assert canon(last.step.triangles) == canon(bowyer_watson(TUTORIAL)) == scipy_canon(TUTORIAL)
+    p.prev.click()
+    assert p.index == len(p.steps) - 2
+    p.slider.value = 3
+    assert p.current_line == "bad" and "bad triangles" in p.caption.value
+
+
+def test_player_on_random_points_ends_in_the_delaunay_triangulation():
+    pts = np.random.default_rng(3).random((25, 2))
+    p = StepPlayer.bowyer_watson(pts)
+    p.index = 10 ** 6                                      # clamps to the last step
+    assert p.index == len(p.steps) - 1
+    assert canon(p.step.step.triangles) == scipy_canon(pts)
+    assert png_size(bytes(p.image.value)) == (480, 400)
+
+
+def test_generic_player_with_phases_and_bad_input():
+    drawn = []
+    p = StepPlayer([10, 20, 30], lambda ax, s, i: drawn.append((s, i)),
+                   phases=lambda s: "odd" if s % 20 else "even",
+                   pseudocode=[("odd", "x"), ("even", "y")])
+    p.next.click()
+    assert drawn[-1] == (20, 1) and p.current_line == "even"
+    with pytest.raises(ValueError, match="at least one step"):
+        StepPlayer([], lambda ax, s, i: None)
+
+
+def test_player_callback_errors_go_to_its_log_not_to_the_void():
+    def draw(ax, s, i):
+        if i == 1:
+            raise RuntimeError("drawing step 1 failed")
+
+    p = StepPlayer([0, 1], draw)
+    p.next.click()                                         # must not raise (as in JupyterLab)
+    assert "drawing step 1 failed" in str(p.errors.outputs)
+
+
+def test_lawson_player_flips_to_the_delaunay_triangulation_one_legal_flip_at_a_time():
+    pts = np.random.default_rng(5).random((30, 2))
+    start = scrambled_triangulation(pts)
+    validate_triangulation(pts, start)                     # a real triangulation of the points...
+    assert not check_delaunay(pts, start)[0]               # ...that is not Delaunay
+    p = StepPlayer.lawson(pts, start)
+    phases = [f.phase for f in p.steps]
+    assert phases[0] == "start" and phases[-1] == "done"
+    assert phases[1:-1] == ["test", "flip"] * ((len(phases) - 2) // 2)
+    X = exact(pts)
+    for f in p.steps:
+        validate_triangulation(pts, f.triangles)          # every frame is a triangulation
+        if f.phase == "test":                              # the edge is illegal: exact check
+            i, j = f.edge
+            pair = [t for t in f.triangles.tolist() if i in t and j in t]
+            far = next(v for v in pair[1] if v not in (i, j))
+            assert exact_incircle(*[X[v] for v in pair[0]], X[far]) > 0
+    assert canon(p.steps[-1].triangles) == scipy_canon(pts)
+    p.slider.value = 1
+    assert p.current_line == "test"
+    assert png_size(png_of(p._repr_mimebundle_()))[0] > 0
+
+
+def test_player_static_picture_is_a_filmstrip_and_text_says_what_it_shows():
+    p = StepPlayer.bowyer_watson(TUTORIAL)
+    bundle = p._repr_mimebundle_()
+    assert "application/vnd.jupyter.widget-view+json" in bundle
+    w, h = png_size(png_of(bundle))
+    assert w > 480 and h >= 190                            # several frames side by side
+    assert bundle["text/plain"].startswith("StepPlayer: Bowyer-Watson (10 steps")
+
+
+# ----------------------------------------------------------------------------- picker
+def click(picker: PointPicker, x: float, y: float) -> None:
+    px, py = picker.canvas.to_pixel(x, y)
+    picker.handle_event({"type": "mousedown", "dataX": px, "dataY": py})
+    picker.handle_event({"type": "mouseup", "dataX": px, "dataY": py})
+
+
+def test_picker_click_adds_drag_moves_click_on_point_removes():
+    p = PointPicker([(0.2, 0.2), (0.8, 0.25), (0.5, 0.8)])
+    before = bytes(p.image.value)
+    click(p, 0.5, 0.45)                                     # empty space: a new point
+    assert len(p.points) == 4 and np.allclose(p.points[3], (0.5, 0.45), atol=0.01)
+    assert canon(p.triangles) == scipy_canon(p.points) and len(p.triangles) == 3
+    assert bytes(p.image.value) != before
+    # drag point 3 to (0.5, 0.1): press on it, move, release
+    sx, sy = p.canvas.to_pixel(*p.points[3])
+    tx, ty = p.canvas.to_pixel(0.5, 0.1)
+    p.handle_event({"type": "mousedown", "dataX": sx, "dataY": sy})
+    p.handle_event({"type": "mousemove", "dataX": (sx + tx) / 2, "dataY": (sy + ty) / 2})
+    p.handle_event({"type": "mousemove", "dataX": tx, "dataY": ty})
+    p.handle_event({"type": "mouseup", "dataX": tx, "dataY": ty})
+    assert len(p.points) == 4 and np.allclose(p.points[3], (0.5, 0.1), atol=0.01)
+    assert check_delaunay(p.points, p.triangles) == (True, "ok")
+    p.undo()                                                # one undo reverts the whole drag
+    assert np.allclose(p.points[3], (0.5, 0.45), atol=0.01)
+    click(p, *p.points[0])                                  # click on a point: removed
+    assert len(p.points) == 3 and not np.allclose(p.points[0], (0.2, 0.2))
+    p.undo()
+    assert np.allclose(p.points[0], (0.2, 0.2))
+
+
+def test_picker_presets_undo_clear_and_on_change():
+    changes = []
+    p = PointPicker(on_change=lambda w: changes.append(len(w.points)))
+    p.load_preset("tutorial")
+    assert p.points.tolist() == [[1, 1], [3, 2], [5, 1], [4, 4]]
+    assert canon(p.triangles) == canon(bowyer_watson(TUTORIAL))
+    px, py = p.canvas.to_pixel(4, 4)                        # the view was fitted to the points
+    assert 0 < px < 440 and 0 < py < 400
+    p.preset.value = "grid"                                 # the dropdown loads a preset
+    assert len(p.points) == 16 and len(p.triangles) == 18  # 3x3 squares, 2 triangles each
+    p.load_preset("collinear")
+    assert len(p.triangles) == 0 and "0 Delaunay triangles" in p.status.value
+    p.load_preset("duplicates")
+    assert len(p.points) == 6 and "(4 distinct)" in p.status.value and len(p.triangles) == 3
+    p.load_preset("circle")
+    assert len(p.triangles) == len(p.points) - 2
+    p.load_preset("random", n=40)
+    assert canon(p.triangles) == scipy_canon(p.points)
+    p.clear()
+    assert len(p.points) == 0 and len(p.triangles) == 0
+    p.undo()
+    assert len(p.points) == 40
+    assert changes[-2:] == [0, 40]
+    with pytest.raises(ValueError, match="unknown preset"):
+        p.load_preset("spiral")
+    with pytest.raises(ValueError, match="no point 99"):
+        p.remove_point(99)
+    with pytest.raises(ValueError, match="not finite"):
+        p.add_point(float("nan"), 0)
+
+
+def test_picker_view_fits_points_given_outside_its_bounds():
+    p = PointPicker(TUTORIAL)                              # default bounds are the unit square
+    for x, y in TUTORIAL:
+        px, py = p.canvas.to_pixel(x, y)
+        assert 0 < px < 440 and 0 < py < 400
+    click(p, 3.5, 2.5)
+    assert len(p.points) == 5 and len(p.triangles) == 5
+
+
+def test_picker_custom_draw_and_static_picture():
+    calls = []
+    p = PointPicker([(0, 0), (1, 0), (0, 1)], draw=lambda ax, pts: calls.append(len(pts)))
+    p.add_point(1, 1)
+    assert calls == [3, 4]
+    bundle = p._repr_mimebundle_()
+    assert png_of(bundle) == bytes(p.image.value)
+    assert "4 points, 2 Delaunay triangles" in bundle["text/plain"]
+
+
+# ----------------------------------------------------------------------------- quizzes
+def test_predict_reveal_locks_the_choice_and_gives_feedback():
+    q = PredictReveal("2 + 2?", [("three", 3), ("four", 4)], 4, explain="Count.")
+    assert q.submit_button.disabled                       # nothing chosen: cannot commit
+    q.choose(4)
+    assert not q.submit_button.disabled and "four" not in q.feedback.value
+    q.submit_button.click()
+    assert q.revealed and q.correct and q.options.disabled
+    assert "Right." in q.feedback.value and "four" in q.feedback.value
+    with pytest.raises(ValueError, match="locked"):
+        q.choose(3)
+    html = q._repr_mimebundle_()["text/html"]
+    assert "<details>" in html and "four" in html.split("<details>")[1]
+    with pytest.raises(ValueError, match="not one of the choices"):
+        PredictReveal("?", [1, 2], 3)
+
+
+def test_bad_triangle_quiz_answers_are_the_triangles_whose_circle_holds_the_point():
+    rng = np.random.default_rng(11)
+    pts = rng.random((9, 2))
+    X = exact(pts)
+    q = bad_triangles_quiz(pts, 6)
+    steps = []
+    bowyer_watson(pts, trace=steps, order="input")
+    new = steps[6].index
+    expected = {t for _, t in q.choices
+                if -1 not in t and exact_incircle(X[t[0]], X[t[1]], X[t[2]], X[new]) > 0}
+    expected |= {t for _, t in q.choices if -1 in t and exact_orient(X[t[0]], X[t[1]], X[new]) > 0}
+    assert set(q.answers) == expected
+    for t in q.answers:
+        q.choose(t)
+    assert q.submit() is True and "Right." in q.feedback.value
+    wrong = bad_triangles_quiz(pts, 6)
+    assert wrong.submit() is (len(wrong.answers) == 0)     # ticking nothing is a prediction too
+    assert png_size(png_of(q._repr_mimebundle_()))[0] == 360
+
+
+def test_locally_delaunay_quiz_against_exact_incircle():
+    pts = [(0, 0), (4, 0), (4, 1), (0, 3)]
+    q = locally_delaunay_quiz(pts, (1, 3), [(0, 1, 3), (1, 2, 3)])
+    assert q.answer == "no"
+    q.choose("yes")
+    assert q.submit() is False and "Not quite." in q.feedback.value
+    legal = locally_delaunay_quiz(pts, (0, 2), [(0, 1, 2), (0, 2, 3)])
+    assert legal.answer == "yes"
+    with pytest.raises(ValueError, match="interior edge"):
+        locally_delaunay_quiz(pts, (0, 1), [(0, 1, 3), (1, 2, 3)])
+
+
+def test_many_quiz_needs_exactly_the_right_set():
+    m = PredictRevealMany("?", ["a", "b", "c"], ["a", "c"])
+    m.choose("a")
+    assert m.submit() is False and "a, c" in m.feedback.value
+
+
+# ----------------------------------------------------------------------------- measurement
+def test_measure_panel_records_plots_and_fits_slopes():
+    calls = []
+
+    def run(n):
+        calls.append(n)
+        return {"square": (n / 100) ** 2, "linear": n / 100}
+
+    panel = MeasurePanel(run, [100, 200, 400, 800], label="fake timings")
+    empty = bytes(panel.image.value)
+    panel.n.value = 200
+    panel.measure_button.click()
+    assert calls == [200] and panel.results["square"] == {200: 4.0}
+    panel.measure_all()
+    assert calls == [200, 100, 200, 400, 800]
+    assert panel.slope("square") == pytest.approx(2.0) and panel.slope("linear") == pytest.approx(1.0)
+    assert bytes(panel.image.value) != empty
+    assert "slope 2.00" in panel._repr_mimebundle_()["text/plain"]
+    bad = MeasurePanel(lambda n: None, [1])
+    bad.measure_button.click()                              # a broken run() is reported in the log
+    assert "ValueError" in str(bad.errors.outputs)
+
+
+def test_quick_mode_follows_the_environment(monkeypatch):
+    monkeypatch.setenv("COURSE_QUICK", "1")
+    assert quick_mode() and pick("small", "big") == "small"
+    monkeypatch.setenv("COURSE_QUICK", "0")
+    assert not quick_mode() and pick("small", "big") == "big"
+
+
+def test_plain_import_of_the_library_does_not_load_the_kit():
+    import subprocess
+    import sys
+    code = "import sys, reference_impl; print('reference_impl.kit' in sys.modules, 'ipywidgets' in sys.modules)"
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.split() == ["False", "False"]
