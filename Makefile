@@ -21,8 +21,11 @@ $(STAMP): pyproject.toml
 demo: setup
 	$(PY) -m reference_impl demo
 
+# Test files run in parallel (pytest-xdist); a module that builds one expensive fixture (the
+# nbgrader class, the JupyterLab server) stays on one worker through its xdist_group mark.
+JOBS ?= 2
 test: setup chromium
-	$(PY) -m pytest
+	$(PY) -m pytest -n $(JOBS) --dist loadgroup
 
 # JupyterLab refuses to run as root without --allow-root (course containers and CI run as root).
 # LAB_ARGS passes extra options, e.g. make lab LAB_ARGS="--no-browser --port=8899".

@@ -27,7 +27,7 @@ from grader.nbgrader_autograde import late_factor, set_exam_deadline
 from grader.problems import load_problem
 
 PROBLEM = "bowyer-watson-timed"
-pytestmark = [pytest.mark.slow,
+pytestmark = [pytest.mark.slow, pytest.mark.xdist_group("nbgrader-e2e"),  # one worker builds the class once
               pytest.mark.skipif(os.geteuid() != 0, reason="grading a class needs root (the sandbox drops to an unprivileged uid)")]
 
 

@@ -20,6 +20,8 @@ from grader.course_notebooks import notebook_path
 from grader.problems import REPO, list_problems
 from grader.student_edition import write_edition
 
+pytestmark = pytest.mark.xdist_group("student-edition")  # one worker writes the edition once
+
 
 @pytest.fixture(scope="module")
 def edition(tmp_path_factory):
