@@ -30,6 +30,8 @@ from typing import Any
 
 import yaml
 
+from .checker_runtime import load_checker, read_answer
+
 REPO = Path(__file__).resolve().parent.parent
 ALWAYS_FORBIDDEN = ("reference_impl", "grader")
 
@@ -139,10 +141,19 @@ class Problem:
                 errors.append(f"group {g.name}: generated cases but no generator")
             if not g.cases and not g.data:
                 errors.append(f"group {g.name}: no tests")
-        for attr in ("read_input", "from_result", "read_output", "check", "PresentationError"):
-            if self.checker_path.is_file() and not hasattr(self.checker, attr):
-                errors.append(f"checker lacks {attr}")
+        if sum(g.points for g in self.groups) != 100:
+            errors.append(f"group points sum to {sum(g.points for g in self.groups)}, not 100")
+        if self.generator_path is not None and self.generator_path.is_file():
+            for attr in ("generate", "solve"):
+                if not callable(getattr(self.generator, attr, None)):
+                    errors.append(f"generator lacks {attr}()")
         return errors
+
+    def validate_checker(self) -> list[str]:
+        """The checker protocol on every test (see :mod:`grader.checker_protocol`)."""
+        from .checker_protocol import validate_checker
+
+        return validate_checker(self)
 
     def validate_inputs(self) -> list[str]:
         """Run the package's input validators on every test input (Kattis: exit 42 = valid)."""
@@ -158,7 +169,11 @@ class Problem:
     # -- modules --------------------------------------------------------------------------
     @cached_property
     def checker(self) -> ModuleType:
-        return _load_module(self.checker_path, f"_checker_{self.id.replace('-', '_')}")
+        return load_checker(self.checker_path, f"_checker_{self.id.replace('-', '_')}")
+
+    def read_answer(self, test: TestCase, args: list) -> Any:
+        """The reference answer of ``test`` in the checker's form (``None`` when there is none)."""
+        return read_answer(self.checker, test.answer_text, args) if test.answer_text else None
 
     @cached_property
     def generator(self) -> ModuleType:
