@@ -144,9 +144,10 @@ class Problem:
         if sum(g.points for g in self.groups) != 100:
             errors.append(f"group points sum to {sum(g.points for g in self.groups)}, not 100")
         if self.generator_path is not None and self.generator_path.is_file():
-            for attr in ("generate", "solve"):
-                if not callable(getattr(self.generator, attr, None)):
-                    errors.append(f"generator lacks {attr}()")
+            if not callable(getattr(self.generator, "solve", None)):
+                errors.append("generator lacks solve()")
+            if not any(callable(getattr(self.generator, a, None)) for a in ("generate", "generate_args")):
+                errors.append("generator lacks generate() (or generate_args())")
         return errors
 
     def validate_checker(self) -> list[str]:
@@ -230,7 +231,7 @@ class Problem:
             for g in self.groups:
                 (tmp / g.name).mkdir()
                 for k, case in enumerate(g.cases):
-                    args = [self.generator.generate(case, self.seed + 1000 * k + sum(map(ord, g.name)))]
+                    args = self.generate_args(case, self.seed + 1000 * k + sum(map(ord, g.name)))
                     stem = tmp / g.name / f"{k + 1:02d}"
                     stem.with_suffix(".in").write_text(self.checker.write_input(args))
                     stem.with_suffix(".ans").write_text(self.checker.write_output(self.generator.solve(*args)))
@@ -242,6 +243,13 @@ class Problem:
             shutil.rmtree(tmp, ignore_errors=True)
             raise
         return target
+
+    def generate_args(self, case: dict, seed: int) -> list[Any]:
+        """The entry function's argument list for one generated case: the generator's
+        ``generate_args(case, seed)`` when it has one (problems with several arguments), else
+        ``[generate(case, seed)]``."""
+        gen = self.generator
+        return list(gen.generate_args(case, seed)) if hasattr(gen, "generate_args") else [gen.generate(case, seed)]
 
     def parse_args(self, test: TestCase) -> list[Any]:
         return self.checker.read_input(test.input_text)
