@@ -30,6 +30,7 @@ from typing import Any
 
 import yaml
 
+from . import checker_runtime
 from .checker_runtime import load_checker, read_answer
 
 REPO = Path(__file__).resolve().parent.parent
@@ -187,11 +188,29 @@ class Problem:
         return {g.name: g.points for g in self.groups}
 
     # -- tests ----------------------------------------------------------------------------
+    def _code_files(self) -> list[Path]:
+        """Files the tests depend on beyond the package: the checker and generator (which may sit
+        behind symlinked directories), the checker's LIBRARY modules, and the point-case modules
+        of other packages that the generator loads."""
+        files = [f for f in (self.checker_path, self.generator_path) if f is not None and f.is_file()]
+        if self.checker_path.is_file():
+            files += [checker_runtime.LIBRARY_DIR / f"{n}.py"
+                      for n in checker_runtime.library_names(self.checker_path.read_text())]
+        if self.generator_path is not None and self.generator_path.is_file():
+            root, seen, todo = str(problems_root()), set(), [self.generator]
+            while todo:  # modules loaded by path from other packages, transitively
+                for m in vars(todo.pop()).values():
+                    f = getattr(m, "__file__", None) if isinstance(m, ModuleType) else None
+                    if f and str(f).startswith(root) and f not in seen:
+                        seen.add(f)
+                        todo.append(m)
+            files += sorted(Path(f) for f in seen)
+        return files
+
     def digest(self) -> str:
         h = hashlib.sha256()
-        for f in (self.checker_path, self.generator_path):  # may sit behind symlinked directories
-            if f is not None and f.is_file():
-                h.update(f.read_bytes())
+        for f in self._code_files():
+            h.update(f.read_bytes())
         for f in sorted(p for p in self.path.rglob("*") if p.is_file() and "__pycache__" not in p.parts):
             h.update(str(f.relative_to(self.path)).encode())
             h.update(f.read_bytes())
