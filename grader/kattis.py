@@ -1,11 +1,11 @@
 """Export a problem as a Kattis problem package (format 2023-07-draft) for problemtools/DOMjudge.
 
 The package gets ``problem.yaml`` (as a ``scoring`` problem), the statement, the input
-validators, the output validator (with ``reference_impl/verify.py`` embedded, so it runs
-without this checkout), ``data/sample``, one directory per scored group under ``data/secret``,
-the generator, and the reference solutions from ``solutions/<problem>/expected.yaml`` under
-``submissions/``. The directory is named after the problem id without dashes (Kattis short
-names are ``[a-z0-9]+``).
+validators, the output validator (with the shared checker runtime and the library modules it
+names embedded, so it runs without this checkout), ``data/sample``, one directory per scored
+group under ``data/secret``, the generator, and the reference solutions from
+``solutions/<problem>/expected.yaml`` under ``submissions/``. The directory is named after the
+problem id without dashes (Kattis short names are ``[a-z0-9]+``).
 
 Scoring is kept as the grader does it: a group's points count only if every test in it passes,
 and the score is the sum over groups. Each ``data/secret/NN-<group>/testdata.yaml`` says
@@ -32,6 +32,7 @@ from pathlib import Path
 
 import yaml
 
+from . import checker_runtime
 from .problems import REPO, Group, Problem, load_problem
 
 KATTIS_DIRS = {"AC": "accepted", "WA": "wrong_answer", "TLE": "time_limit_exceeded", "RE": "run_time_error",
@@ -158,12 +159,7 @@ def export(problem: Problem | str, outdir: str | Path, groups: list[str] | None 
             shutil.copytree(p.path / d, dest / d, ignore=shutil.ignore_patterns("__pycache__"))
     ov = dest / "output_validator"
     ov.mkdir()
-    checker = p.checker_path.read_text()
-    verify = (REPO / "reference_impl" / "verify.py").read_text()
-    if "EMBEDDED_VERIFY_SOURCE" in checker:  # a self-contained single-file validator
-        head, sep, body = checker.partition("\nfrom __future__ import annotations\n")
-        checker = f"{head}{sep}\nEMBEDDED_VERIFY_SOURCE = {verify!r}\n{body}"
-    (ov / p.checker_path.name).write_text(checker)
+    (ov / p.checker_path.name).write_text(embed_checker(p))
     data = dest / "data"
     _testdata(data, on_reject="continue", grader_flags="ignore_sample")
     _testdata(data / "sample", on_reject="continue", grader_flags="sum", accept_score=0, range="0 0")
@@ -183,6 +179,12 @@ def export(problem: Problem | str, outdir: str | Path, groups: list[str] | None 
             (dest / "submissions" / sub_dir).mkdir(parents=True, exist_ok=True)
             shutil.copy(REPO / "solutions" / p.id / name, dest / "submissions" / sub_dir / name)
     return dest
+
+
+def embed_checker(p: Problem) -> str:
+    """The checker as one self-contained file: the shared runtime and the library modules it names
+    in ``LIBRARY`` embedded, plus the Kattis ``__main__`` entry (see :mod:`grader.checker_runtime`)."""
+    return checker_runtime.embed(p.checker_path.read_text(), REPO / "reference_impl")
 
 
 LANGUAGES_YAML = """\
