@@ -15,6 +15,7 @@ import pytest
 from hypothesis import given, settings, strategies as st
 from scipy.spatial import ConvexHull, Delaunay as QhullDelaunay
 
+from grader.kattis import embed_checker
 from grader.problems import load_problem
 from reference_impl import delaunay_3d
 from reference_impl.verify import brute_force_empty_spheres, exact_coordinates_3d, orient3d_exact
@@ -111,7 +112,7 @@ def test_reference_answer_of_every_generated_test_passes():
     for t in PROBLEM.tests():
         if t.group in ("sample", "tiny", "degenerate"):
             args = CHK.read_input(t.input_text)
-            ok, msg = CHK.check(args, CHK.read_answer(t.answer_text), None)
+            ok, msg = CHK.check(args, CHK.read_output(t.answer_text, args), None)
             assert ok, (t.name, msg)
 
 
@@ -206,6 +207,9 @@ def test_text_formats_round_trip():
 
 
 def test_kattis_output_validator_exit_codes(tmp_path):
+    """The exported, self-contained checker (verify.py embedded) as problemtools runs it."""
+    exported = tmp_path / "checker.py"
+    exported.write_text(embed_checker(PROBLEM))
     inp = tmp_path / "in"
     inp.write_text(CHK.write_input([FIVE]))
     ans = tmp_path / "ans"
@@ -213,7 +217,7 @@ def test_kattis_output_validator_exit_codes(tmp_path):
     for team, code, words in (("3\n0 2 3 4\n0 1 2 4\n0 3 4 1\n", 42, "ok"),
                               ("2\n0 1 2 3\n4 1 2 3\n", 43, "not Delaunay"),
                               ("three\n", 43, "presentation error")):
-        r = subprocess.run([sys.executable, str(PROBLEM.checker_path), str(inp), str(ans), str(tmp_path)],
+        r = subprocess.run([sys.executable, "-I", str(exported), str(inp), str(ans), str(tmp_path)],
                            input=team, text=True, capture_output=True)
         assert r.returncode == code, r.stderr
         assert words in (tmp_path / "judgemessage.txt").read_text()
