@@ -393,7 +393,11 @@ def check_delaunay_3d(points, tetrahedra) -> tuple[bool, str]:
         if insphere_exact(a, b, c, P[x], P[y]) > 0:
             return False, (f"face {key} is not Delaunay: point {y} is strictly inside the circumsphere of "
                            f"tetrahedron {T[t0]}")
-    # (3) boundary faces on the hull: integer plane equations, one dot product per vertex
+    # (3) boundary faces on the hull: integer plane equations, one dot product per vertex.  A convex
+    # hull has at most 2h - 4 triangles (h <= n vertices), which bounds this O(faces x vertices) loop
+    if len(boundary) > max(4, 2 * len(bverts) - 4):
+        return False, (f"{len(boundary)} faces belong to one tetrahedron only, more than a convex hull of "
+                       f"{len(bverts)} vertices has: the tetrahedra leave gaps or overlap")
     bpts = [(q, P[q]) for q in sorted(bverts)]
     for ti, x, f in boundary:
         a, b, c = (P[v] for v in f)
@@ -406,7 +410,7 @@ def check_delaunay_3d(points, tetrahedra) -> tuple[bool, str]:
             s = nx * p[0] + ny * p[1] + nz * p[2] - off
             if s * inner < 0:
                 return False, (f"face {tuple(sorted(f))} belongs to tetrahedron {T[ti]} only, but it is not on "
-                               f"the convex hull: point {q} lies beyond it (a hole, a gap or an overlap)")
+                               f"the convex hull: point {q} lies beyond it (the tetrahedra leave gaps or overlap)")
     # (4) the centroid of T[0] (times 4) is covered by exactly one closed tetrahedron
     c4 = tuple(sum(P[v][i] for v in T[0]) for i in range(3))
     covering = 0

@@ -122,7 +122,7 @@ def test_rejects_each_kind_of_wrong_answer():
     tets = delaunay_3d(np.array(grid)).tolist()
     assert check(grid, tets)[0]
     cases = {
-        "a hole": (tets[1:], "not on the convex hull"),
+        "a hole": (tets[1:], "gaps"),
         "an overlap (a repeated tetrahedron)": (tets + tets[:1], "more than two"),
         "a flat tetrahedron": (tets[1:] + [[0, 1, 2, 2]], "flat"),
         "an index out of range": (tets[:-1] + [[0, 1, 2, 99]], "outside 0..26"),
@@ -131,6 +131,12 @@ def test_rejects_each_kind_of_wrong_answer():
     for what, (answer, words) in cases.items():
         ok, msg = check(grid, answer)
         assert not ok and words in msg, (what, msg)
+    # every other tetrahedron: a checkerboard of gaps, rejected by the hull-size bound before the
+    # O(faces x vertices) hull test
+    big = [[float(x), float(y), float(z)] for x in range(5) for y in range(5) for z in range(5)]
+    sparse = delaunay_3d(np.array(big)).tolist()[::2]
+    ok, msg = check(big, sparse)
+    assert not ok and "more than a convex hull" in msg, msg
     # the two-tetrahedra split of sample 2 tiles the hull but is not Delaunay
     ok, msg = check(FIVE, [[0, 1, 2, 3], [4, 1, 2, 3]])
     assert not ok and "not Delaunay" in msg and "point" in msg
