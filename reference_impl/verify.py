@@ -127,6 +127,26 @@ def _rows(triangles) -> list[list]:
     return [list(t) for t in rows]
 
 
+def _index_rows(rows: list, n: int, width: int, what: str) -> tuple[list | None, str]:
+    """The rows as lists of ``width`` integer indices in 0..n-1, or ``(None, what is wrong)``.
+
+    >>> _index_rows([[0, 1, 2]], 3, 3, "triangle")
+    ([[0, 1, 2]], 'ok')
+    """
+    out = []
+    for k, t in enumerate(rows):
+        try:
+            ids = [operator.index(v) for v in t]
+        except TypeError:
+            return None, f"{what} {k} has non-integer vertex indices {list(t)!r}"
+        if len(ids) != width:
+            return None, f"{what} {k} = {ids} does not have exactly {width} vertices"
+        if any(v < 0 or v >= n for v in ids):
+            return None, f"{what} {k} = {ids} has an index outside 0..{n - 1}"
+        out.append(ids)
+    return out, "ok"
+
+
 def check_delaunay(points, triangles) -> tuple[bool, str]:
     """Check exactly that ``triangles`` is a Delaunay triangulation of ``points``.
 
@@ -143,17 +163,10 @@ def check_delaunay(points, triangles) -> tuple[bool, str]:
     for i, p in enumerate(P):
         canon.setdefault(p, i)
     rep = [canon[p] for p in P]
-    T: list[tuple[int, int, int]] = []
-    for k, t in enumerate(tris):
-        try:
-            ids = [operator.index(v) for v in t]
-        except TypeError:
-            return False, f"triangle {k} has non-integer vertex indices {list(t)!r}"
-        if len(ids) != 3:
-            return False, f"triangle {k} = {ids} does not have exactly 3 vertices"
-        if any(v < 0 or v >= n for v in ids):
-            return False, f"triangle {k} = {ids} has an index outside 0..{n - 1}"
-        T.append((rep[ids[0]], rep[ids[1]], rep[ids[2]]))
+    rows, message = _index_rows(tris, n, 3, "triangle")
+    if rows is None:
+        return False, message
+    T = [(rep[a], rep[b], rep[c]) for a, b, c in rows]
 
     hull = convex_hull_exact(P, keep_collinear=True)
     distinct = sorted(set(rep))
@@ -346,16 +359,11 @@ def check_delaunay_3d(points, tetrahedra) -> tuple[bool, str]:
     first: dict = {}
     rep = [first.setdefault(p, i) for i, p in enumerate(P)]
     distinct = sorted(first.values())
+    rows, message = _index_rows(_rows(tetrahedra), n, 4, "tetrahedron")
+    if rows is None:
+        return False, message
     T: list[tuple[int, int, int, int]] = []
-    for k, t in enumerate(_rows(tetrahedra)):
-        try:
-            ids = [operator.index(v) for v in t]
-        except TypeError:
-            return False, f"tetrahedron {k} has non-integer vertex indices {list(t)!r}"
-        if len(ids) != 4:
-            return False, f"tetrahedron {k} = {ids} does not have exactly 4 vertices"
-        if any(v < 0 or v >= n for v in ids):
-            return False, f"tetrahedron {k} = {ids} has an index outside 0..{n - 1}"
+    for k, ids in enumerate(rows):
         a, b, c, d = (rep[v] for v in ids)
         s = orient3d_exact(P[a], P[b], P[c], P[d])
         if s == 0:
