@@ -143,17 +143,4 @@ def check(args: list, edges: list[list[int]], expected: list[list[int]] | None) 
 
 def draw(axes, args: list, received: list[list[int]], expected: list[list[int]] | None) -> None:
     """Picture for reports: an optimal tree (left) and the received edges (right)."""
-    (points,) = args
-    xs, ys = [p[0] for p in points], [p[1] for p in points]
-    n = len(points)
-    for ax, edges, title, colour in ((axes[0], expected or [], "an optimal tree", "tab:blue"),
-                                     (axes[1], received or [], "received", "tab:red")):
-        for i, j in edges:
-            if 0 <= i < n and 0 <= j < n:
-                ax.plot([xs[i], xs[j]], [ys[i], ys[j]], color=colour, lw=1.0)
-        ax.scatter(xs, ys, s=12, color="black", zorder=3)
-        if n <= 30:
-            for i, (x, y) in enumerate(points):
-                ax.annotate(str(i), (x, y), fontsize=7, xytext=(3, 3), textcoords="offset points")
-        ax.set_title(f"{title}: {len(edges)} edges", fontsize=9)
-        ax.set_aspect("equal", adjustable="datalim")
+    judge_io.draw_edges(axes, args[0], received, expected, "an optimal tree")  # noqa: F821
