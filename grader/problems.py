@@ -215,7 +215,11 @@ class Problem:
             for g in self.groups:
                 (tmp / g.name).mkdir()
                 for k, case in enumerate(g.cases):
-                    args = [self.generator.generate(case, self.seed + 1000 * k + sum(map(ord, g.name)))]
+                    case_seed = self.seed + 1000 * k + sum(map(ord, g.name))
+                    if hasattr(self.generator, "generate_args"):  # several arguments (e.g. points, bbox)
+                        args = list(self.generator.generate_args(case, case_seed))
+                    else:
+                        args = [self.generator.generate(case, case_seed)]
                     stem = tmp / g.name / f"{k + 1:02d}"
                     stem.with_suffix(".in").write_text(self.checker.write_input(args))
                     stem.with_suffix(".ans").write_text(self.checker.write_output(self.generator.solve(*args)))
