@@ -1,0 +1,124 @@
+"""The "circles" problems (obstacle-clearance, largest-empty-circle, voronoi): their packages
+round-trip every test, and their checkers accept every valid answer (within the stated
+tolerance) and reject each kind of wrong one with a useful message; exact oracles where the
+checker relies on its own geometry (convex hull against scipy, emptiness by brute force).
+
+Run: .venv/bin/python -m pytest tests/grader/test_problem_circles.py -q
+"""
+from __future__ import annotations
+
+import math
+import random
+import subprocess
+import sys
+
+import pytest
+
+from grader.problems import load_problem
+
+CIRCLES = ["obstacle-clearance", "largest-empty-circle", "voronoi"]
+
+
+def _problem(pid):
+    try:
+        return load_problem(pid)
+    except ValueError:
+        pytest.skip(f"{pid} is not built on this branch yet")
+
+
+@pytest.fixture(scope="module", params=CIRCLES)
+def problem(request):
+    return _problem(request.param)
+
+
+def test_package_is_sound_and_every_test_round_trips(problem):
+    assert problem.validate() == []
+    assert sum(g.points for g in problem.groups) == 100
+    assert {"sample", "tiny", "degenerate", "medium", "large"} <= {g.name for g in problem.groups}
+    chk = problem.checker
+    for t in problem.tests():
+        args = chk.read_input(t.input_text)
+        assert chk.read_input(chk.write_input(args)) == args, t.name
+        answer = chk.read_answer(t.answer_text)
+        assert chk.read_output(chk.write_output(answer), args) == answer, t.name
+        assert chk.check(args, answer, answer) == (True, "ok"), t.name
+
+
+def test_input_validator_accepts_every_test_and_rejects_garbage(problem):
+    assert problem.validate_inputs() == []
+    validator = next((problem.path / "input_validators").rglob("*.py"))
+    for bad in ("", "2\n0 0\n", "x\n", "1\n0 nan\n0 0\n0 0\n", "3\n0 0\n1 1\n2 2\n0 0 1 1\n"):
+        r = subprocess.run([sys.executable, str(validator)], input=bad, text=True, capture_output=True)
+        assert r.returncode == 43, (bad, r.stderr)
+
+
+# ----------------------------------------------------------------------------- obstacle-clearance
+def test_clearance_tolerance_and_infinity():
+    chk = _problem("obstacle-clearance").checker
+    args = [[[0.0, 0.0], [2.0, 0.0]], [1.0, 1.0], [1.0, -1.0]]
+    assert chk.check(args, 1.0 + 5e-7, 1.0)[0]
+    ok, msg = chk.check(args, 1.0 + 3e-6, 1.0)
+    assert not ok and "too large" in msg
+    ok, msg = chk.check(args, 0.99, 1.0)
+    assert not ok and "too small" in msg
+    none = [[], [0.0, 0.0], [1.0, 1.0]]
+    assert chk.check(none, math.inf, math.inf) == (True, "ok")
+    assert not chk.check(none, 1e308, math.inf)[0]
+    assert not chk.check(args, math.inf, 1.0)[0]
+    # absolute part: 1e-14 of the largest coordinate (coordinates near 1e9)
+    far = [[[1e9, 1e9], [1e9 + 2, 1e9]], [1e9 + 1, 1e9 + 1], [1e9 + 1, 1e9 - 1]]
+    assert chk.check(far, 1.0 + 1e-6 + 5e-6, 1.0)[0]
+    assert not chk.check(far, 1.0 + 1e-6 + 2e-5, 1.0)[0]
+
+
+def test_clearance_types_are_strict():
+    chk = _problem("obstacle-clearance").checker
+    assert chk.from_result(2, None) == 2.0 and chk.from_result(math.inf, None) == math.inf
+    for bad in (True, "1.0", [1.0], None, math.nan, -1.0):
+        with pytest.raises(chk.PresentationError):
+            chk.from_result(bad, None)
+    assert chk.read_output("inf\n", None) == math.inf
+    for bad in ("", "1 2", "one", "nan", "-3"):
+        with pytest.raises(chk.PresentationError):
+            chk.read_output(bad, None)
+
+
+def test_clearance_answers_are_critical_values():
+    """The optimum is always a critical value: d(start), d(goal) or half the distance between two
+    obstacles (brute force over all pairs), and never above d(start). (max_clearance itself is
+    checked against a Voronoi-retraction oracle in the reference_impl tests.)"""
+    from reference_impl import max_clearance
+
+    rng = random.Random(4)
+    for _ in range(30):
+        pts = [[rng.random(), rng.random()] for _ in range(rng.randint(3, 12))]
+        s, g = [rng.random(), rng.random()], [rng.uniform(-1, 2), rng.uniform(-1, 2)]
+        r = max_clearance(pts, s, g)
+        crit = [math.dist(p, s) for p in pts] + [math.dist(p, g) for p in pts]
+        crit += [0.5 * math.dist(a, b) for a in pts for b in pts]
+        assert min(abs(r - c) for c in crit) <= 1e-12
+        assert r <= min(math.dist(p, s) for p in pts) + 1e-15
+
+
+def test_clearance_kattis_validator_exit_codes(tmp_path):
+    p = _problem("obstacle-clearance")
+    (tmp_path / "in").write_text("4\n0 0\n2 0\n2 2\n0 2\n1 1\n5 1\n")
+    (tmp_path / "ans").write_text("1.0\n")
+    for team, code in (("1.0000001\n", 42), ("1.4142135623730951\n", 43), ("1 2\n", 43), ("\xff", 43)):
+        r = subprocess.run([sys.executable, str(p.checker_path), str(tmp_path / "in"), str(tmp_path / "ans"),
+                            str(tmp_path)], input=team.encode("latin-1"), capture_output=True)
+        assert r.returncode == code, (team, (tmp_path / "judgemessage.txt").read_text())
+
+
+# ----------------------------------------------------------------------------- reference solutions
+SOLUTIONS = [(pid, f, v) for pid in CIRCLES for f, v in __import__("grader.kattis", fromlist=["x"]).expected_verdicts(pid).items()]
+
+
+@pytest.mark.parametrize("pid,file,verdict", SOLUTIONS, ids=[f"{p}/{f}" for p, f, _ in SOLUTIONS])
+def test_solution_gets_its_verdict(pid, file, verdict):
+    from grader.judge import Judge
+    from grader.problems import REPO
+
+    result = Judge(_problem(pid), stop_at_first_failure=verdict != "AC").judge_path(REPO / "solutions" / pid / file)
+    assert result.verdict == verdict, [(t.name, str(t.verdict), t.message[:120]) for t in result.tests]
+    assert all(t.verdict != "JE" for t in result.tests)
