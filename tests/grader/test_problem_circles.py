@@ -122,3 +122,68 @@ def test_solution_gets_its_verdict(pid, file, verdict):
     result = Judge(_problem(pid), stop_at_first_failure=verdict != "AC").judge_path(REPO / "solutions" / pid / file)
     assert result.verdict == verdict, [(t.name, str(t.verdict), t.message[:120]) for t in result.tests]
     assert all(t.verdict != "JE" for t in result.tests)
+
+
+# ----------------------------------------------------------------------------- largest-empty-circle
+SQUARE = [[[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [0.0, 4.0]]]
+OPT = [2.0, 2.0, 8 ** 0.5]
+
+
+def test_lec_accepts_any_optimal_circle_and_rejects_each_fault():
+    chk = _problem("largest-empty-circle").checker
+    obtuse = [[[0.0, 0.0], [4.0, 0.0], [2.0, 1.0]]]
+    assert chk.check(obtuse, [1.25, 0.0, 1.25], [1.25, 0.0, 1.25]) == (True, "ok")
+    assert chk.check(obtuse, [2.75, 0.0, 1.25], [1.25, 0.0, 1.25]) == (True, "ok")   # the other optimum
+    assert chk.check(obtuse, [2.0, -1.5, 2.5], [1.25, 0.0, 1.25])[1].startswith("the centre (2.0, -1.5) is outside")
+    assert chk.check(SQUARE, [2.0, 2.0, 8 ** 0.5 * (1 + 5e-7)], OPT)[0]                # within tolerance
+    assert "strictly inside" in chk.check(SQUARE, [2.0, 2.0, 3.0], OPT)[1]
+    assert "not the largest" in chk.check(SQUARE, [2.0, 2.0, 2.8], OPT)[1]
+    assert "strictly inside" in chk.check(SQUARE, [2.1, 2.0, 8 ** 0.5], OPT)[1]
+    # centre on the hull boundary (right angle) within a few ulps outside is fine
+    right = [[[0.0, 0.0], [2.0, 0.0], [1.0, 1.0]]]
+    assert chk.check(right, [1.0, -1e-16, 1.0], [1.0, 0.0, 1.0]) == (True, "ok")
+    assert not chk.check(right, [1.0, -1e-3, 1.0], [1.0, 0.0, 1.0])[0]
+    # huge and tiny scales: no overflow, no division by zero, a far centre is rejected
+    for scale in (1e-300, 1e300):
+        pts = [[[x * scale, y * scale] for x, y in SQUARE[0]]]
+        assert chk.check(pts, [2 * scale, 2 * scale, 8 ** 0.5 * scale], [2 * scale, 2 * scale, 8 ** 0.5 * scale])[0]
+        assert not chk.check(pts, [1e308, 1e308, 8 ** 0.5 * scale], [2 * scale, 2 * scale, 8 ** 0.5 * scale])[0]
+    mixed = [[[0.0, 0.0], [1e-300, 0.0], [2e-300, 1e-300], [1e300, 0.0], [0.0, 1e300]]]
+    assert isinstance(chk.check(mixed, [1e299, 1e299, 1e299], [1e299, 1e299, 1e299])[0], bool)
+
+
+def test_lec_types_are_strict():
+    chk = _problem("largest-empty-circle").checker
+    assert chk.from_result([1, 2.5, 3], None) == [1.0, 2.5, 3.0]
+    for bad in ([1.0, 2.0], (1.0, 2.0, 3.0), [1.0, 2.0, -1.0], [1.0, True, 2.0], [1.0, 2.0, math.inf],
+                [1.0, 2.0, math.nan], "1 2 3", None, [[1.0], 2.0, 3.0]):
+        with pytest.raises(chk.PresentationError):
+            chk.from_result(bad, None)
+    for bad in ("", "1 2", "1 2 3 4", "a b c", "1 2 -3", "nan 0 1"):
+        with pytest.raises(chk.PresentationError):
+            chk.read_output(bad, None)
+
+
+def test_lec_hull_matches_scipy_and_reference_passes_brute_force_emptiness():
+    """The checker's exact hull equals scipy's on random and duplicated sets; the reference answer
+    is empty and no random empty circle centred in the hull beats it (brute force)."""
+    from scipy.spatial import ConvexHull
+
+    from reference_impl import largest_empty_circle
+
+    chk = _problem("largest-empty-circle").checker
+    rng = random.Random(8)
+    for trial in range(25):
+        pts = [[float(rng.randint(0, 20)), float(rng.randint(0, 20))] for _ in range(rng.randint(4, 30))]
+        if trial % 2:
+            pts = [[rng.random(), rng.random()] for _ in range(20)]
+        hull = chk.convex_hull(pts)
+        ref = ConvexHull(pts)
+        assert {tuple(pts[i]) for i in hull} == {tuple(pts[i]) for i in ref.vertices}
+        x, y, r = largest_empty_circle(pts)
+        assert chk.check([pts], [x, y, r], [x, y, r]) == (True, "ok")
+        hx = [pts[i] for i in hull]
+        for _ in range(200):   # random centres in the hull: never a larger empty circle
+            w = [rng.random() for _ in hx]
+            c = [sum(wi * p[0] for wi, p in zip(w, hx)) / sum(w), sum(wi * p[1] for wi, p in zip(w, hx)) / sum(w)]
+            assert min(math.dist(c, p) for p in pts) <= r + 1e-12
