@@ -105,7 +105,8 @@ def _cmd_export(a: argparse.Namespace) -> int:
 
 def _cmd_validate(a: argparse.Namespace) -> int:
     p = load_problem(a.problem)
-    errors = p.validate() + p.validate_inputs()
+    errors = p.validate()
+    errors += (p.validate_checker() + p.validate_inputs()) if not errors else []
     for e in errors:
         print(f"{p.id}: {e}")
     print(f"{p.id}: {len(p.tests())} tests, {'OK' if not errors else f'{len(errors)} problems'}")

@@ -100,7 +100,7 @@ class Judge:
         if self._args[k] is None:
             chk, t = self.problem.checker, self.tests[k]
             self._args[k] = chk.read_input(t.input_text)
-            self._answers[k] = chk.read_answer(t.answer_text) if t.answer_text else None
+            self._answers[k] = self.problem.read_answer(t, self._args[k])
         return self._args[k], self._answers[k]
 
     def judge_path(self, path: str | Path, on_test: Callable[[TestResult], None] | None = None,

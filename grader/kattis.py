@@ -1,7 +1,8 @@
 """Export a problem as a Kattis problem package (format 2023-07-draft) for problemtools/DOMjudge.
 
 The package gets ``problem.yaml``, the statement, the input validators, the output validator
-(with ``reference_impl/verify.py`` embedded, so it runs without this checkout),
+(with the shared checker runtime and the library modules it names embedded, so it runs
+without this checkout),
 ``data/sample`` and every hidden group materialised under ``data/secret``, the generator, and the
 reference solutions from ``solutions/<problem>/expected.yaml`` under ``submissions/``. The
 directory is named after the problem id without dashes (Kattis short names are ``[a-z0-9]+``).
@@ -19,6 +20,7 @@ from pathlib import Path
 
 import yaml
 
+from . import checker_runtime
 from .problems import REPO, Problem, load_problem
 
 KATTIS_DIRS = {"AC": "accepted", "WA": "wrong_answer", "TLE": "time_limit_exceeded", "RE": "run_time_error",
@@ -56,12 +58,7 @@ def export(problem: Problem | str, outdir: str | Path, groups: list[str] | None 
             shutil.copytree(p.path / d, dest / d, ignore=shutil.ignore_patterns("__pycache__"))
     ov = dest / "output_validator"
     ov.mkdir()
-    checker = p.checker_path.read_text()
-    verify = (REPO / "reference_impl" / "verify.py").read_text()
-    if "EMBEDDED_VERIFY_SOURCE" in checker:  # a self-contained single-file validator
-        head, sep, body = checker.partition("\nfrom __future__ import annotations\n")
-        checker = f"{head}{sep}\nEMBEDDED_VERIFY_SOURCE = {verify!r}\n{body}"
-    (ov / p.checker_path.name).write_text(checker)
+    (ov / p.checker_path.name).write_text(embed_checker(p))
     (dest / "data" / "sample").mkdir(parents=True)
     (dest / "data" / "secret").mkdir(parents=True)
     order = {g.name: i for i, g in enumerate(p.groups)}
@@ -83,6 +80,12 @@ def export(problem: Problem | str, outdir: str | Path, groups: list[str] | None 
                 (dest / "submissions" / sub_dir).mkdir(parents=True, exist_ok=True)
                 shutil.copy(src, dest / "submissions" / sub_dir / src.name)
     return dest
+
+
+def embed_checker(p: Problem) -> str:
+    """The checker as one self-contained file: the shared runtime and the library modules it names
+    in ``LIBRARY`` embedded, plus the Kattis ``__main__`` entry (see :mod:`grader.checker_runtime`)."""
+    return checker_runtime.embed(p.checker_path.read_text(), REPO / "reference_impl")
 
 
 LANGUAGES_YAML = """\

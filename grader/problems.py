@@ -30,6 +30,8 @@ from typing import Any
 
 import yaml
 
+from .checker_runtime import load_checker, read_answer
+
 REPO = Path(__file__).resolve().parent.parent
 ALWAYS_FORBIDDEN = ("reference_impl", "grader")
 
@@ -139,10 +141,20 @@ class Problem:
                 errors.append(f"group {g.name}: generated cases but no generator")
             if not g.cases and not g.data:
                 errors.append(f"group {g.name}: no tests")
-        for attr in ("read_input", "from_result", "read_output", "check", "PresentationError"):
-            if self.checker_path.is_file() and not hasattr(self.checker, attr):
-                errors.append(f"checker lacks {attr}")
+        if sum(g.points for g in self.groups) != 100:
+            errors.append(f"group points sum to {sum(g.points for g in self.groups)}, not 100")
+        if self.generator_path is not None and self.generator_path.is_file():
+            if not callable(getattr(self.generator, "solve", None)):
+                errors.append("generator lacks solve()")
+            if not any(callable(getattr(self.generator, a, None)) for a in ("generate", "generate_args")):
+                errors.append("generator lacks generate() (or generate_args())")
         return errors
+
+    def validate_checker(self) -> list[str]:
+        """The checker protocol on every test (see :mod:`grader.checker_protocol`)."""
+        from .checker_protocol import validate_checker
+
+        return validate_checker(self)
 
     def validate_inputs(self) -> list[str]:
         """Run the package's input validators on every test input (Kattis: exit 42 = valid)."""
@@ -158,7 +170,11 @@ class Problem:
     # -- modules --------------------------------------------------------------------------
     @cached_property
     def checker(self) -> ModuleType:
-        return _load_module(self.checker_path, f"_checker_{self.id.replace('-', '_')}")
+        return load_checker(self.checker_path, f"_checker_{self.id.replace('-', '_')}")
+
+    def read_answer(self, test: TestCase, args: list) -> Any:
+        """The reference answer of ``test`` in the checker's form (``None`` when there is none)."""
+        return read_answer(self.checker, test.answer_text, args) if test.answer_text else None
 
     @cached_property
     def generator(self) -> ModuleType:
@@ -215,11 +231,7 @@ class Problem:
             for g in self.groups:
                 (tmp / g.name).mkdir()
                 for k, case in enumerate(g.cases):
-                    case_seed = self.seed + 1000 * k + sum(map(ord, g.name))
-                    if hasattr(self.generator, "generate_args"):  # several arguments (e.g. points, bbox)
-                        args = list(self.generator.generate_args(case, case_seed))
-                    else:
-                        args = [self.generator.generate(case, case_seed)]
+                    args = self.generate_args(case, self.seed + 1000 * k + sum(map(ord, g.name)))
                     stem = tmp / g.name / f"{k + 1:02d}"
                     stem.with_suffix(".in").write_text(self.checker.write_input(args))
                     stem.with_suffix(".ans").write_text(self.checker.write_output(self.generator.solve(*args)))
@@ -231,6 +243,13 @@ class Problem:
             shutil.rmtree(tmp, ignore_errors=True)
             raise
         return target
+
+    def generate_args(self, case: dict, seed: int) -> list[Any]:
+        """The entry function's argument list for one generated case: the generator's
+        ``generate_args(case, seed)`` when it has one (problems with several arguments), else
+        ``[generate(case, seed)]``."""
+        gen = self.generator
+        return list(gen.generate_args(case, seed)) if hasattr(gen, "generate_args") else [gen.generate(case, seed)]
 
     def parse_args(self, test: TestCase) -> list[Any]:
         return self.checker.read_input(test.input_text)

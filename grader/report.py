@@ -27,7 +27,7 @@ def _picture(problem: Problem, result: JudgeResult) -> str:
     args = problem.checker.read_input(test.input_text)
     if len(args[0]) > MAX_DRAW_POINTS:
         return ""
-    expected = problem.checker.read_answer(test.answer_text) if test.answer_text else None
+    expected = problem.read_answer(test, args)
     import matplotlib
 
     matplotlib.use("Agg")

@@ -8,11 +8,13 @@ import pytest
 
 from grader.judge import Judge
 from grader.kattis import expected_verdicts
+from grader.problems import list_problems
 from grader.verdicts import Verdict
 
 from .conftest import REPO
 
-CASES = [(p, f, v) for p in ("delaunay", "bowyer-watson-timed") for f, v in expected_verdicts(p).items()]
+PROBLEMS = [p.id for p in list_problems()]
+CASES = [(p, f, v) for p in PROBLEMS for f, v in expected_verdicts(p).items()]
 
 
 @pytest.fixture(scope="module")
@@ -32,9 +34,12 @@ def test_solution_verdict(problem, file, verdict, judges):
         assert result.score == result.max_score == 100
 
 
-def test_every_problem_has_accepted_wrong_and_slow():
-    for p in ("delaunay", "bowyer-watson-timed"):
-        assert {"AC", "WA", "TLE"} <= set(expected_verdicts(p).values())
+@pytest.mark.parametrize("problem", PROBLEMS)
+def test_every_problem_has_accepted_wrong_and_slow(problem):
+    expected = expected_verdicts(problem)
+    assert {"AC", "WA", "TLE"} <= set(expected.values()), expected
+    for name in expected:
+        assert (REPO / "solutions" / problem / name).exists(), name
 
 
 def test_accepted_delaunay_implements_bowyer_watson_itself():

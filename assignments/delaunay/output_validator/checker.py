@@ -4,13 +4,14 @@ Two uses, one logic:
 
 * the grader imports this file and calls ``read_input``, ``from_result`` / ``read_output`` and
   ``check`` in its own process (answers never reach the student's side);
-* Kattis / problemtools run it as an output validator:
-  ``python3 checker.py input answer feedback_dir < team_output`` (exit 42 accept, 43 reject,
-  the reason in ``feedback_dir/judgemessage.txt``).
+* Kattis / problemtools run the exported copy (``python -m grader export-kattis delaunay OUT``) as an
+  output validator: ``python3 checker.py input answer feedback_dir < team_output`` (exit 42
+  accept, 43 reject, the reason in ``feedback_dir/judgemessage.txt``).
 
-The exact test itself is ``reference_impl.verify.check_delaunay`` (Python integers): embedded in
-this file by ``export-kattis``, else loaded by path from the checkout, without importing the rest
-of ``reference_impl`` (which would pull in numba).
+The exact test itself is ``reference_impl.verify.check_delaunay`` (Python integers), named in
+``LIBRARY``: the shared loader (``grader/checker_runtime.py``) binds it without importing the rest
+of ``reference_impl`` (which would pull in numba), and ``export-kattis`` embeds it together with
+the Kattis entry point.
 
 Example:
     >>> check([[[0, 0], [1, 0], [0, 1]]], [[0, 1, 2]], None)
@@ -18,43 +19,13 @@ Example:
 """
 from __future__ import annotations
 
-import importlib.util
 import math
-import sys
-from pathlib import Path
+
+LIBRARY = ("verify",)  # reference_impl/verify.py, bound as the global `verify` by the shared loader
 
 
 class PresentationError(Exception):
     """The output has the wrong shape or type (verdict PE), as opposed to a wrong triangulation."""
-
-
-def _load_verify():
-    embedded = globals().get("EMBEDDED_VERIFY_SOURCE")  # set by `python -m grader export-kattis`
-    if embedded:
-        module = type(sys)("_delaunay_verify")
-        exec(compile(embedded, "verify.py", "exec"), module.__dict__)
-        return module
-    here = Path(__file__).resolve().parent
-    candidates = [here / "verify.py"] + [p / "reference_impl" / "verify.py" for p in here.parents]
-    for path in candidates:
-        if path.is_file():
-            spec = importlib.util.spec_from_file_location("_delaunay_verify", path)
-            module = importlib.util.module_from_spec(spec)
-            spec.loader.exec_module(module)
-            return module
-    raise ImportError("reference_impl/verify.py not found next to the checker or in a parent directory")
-
-
-_verify = None
-
-
-def check_delaunay(points, triangles):
-    """``reference_impl.verify.check_delaunay``, loaded on first use (malformed output is
-    rejected without paying for numpy's import)."""
-    global _verify
-    if _verify is None:
-        _verify = _load_verify()
-    return _verify.check_delaunay(points, triangles)
 
 
 def read_input(text: str) -> list:
@@ -126,33 +97,10 @@ def check(args: list, triangles: list[list[int]], expected: list[list[int]] | No
         bad = [v for v in t if not 0 <= v < n]
         if bad:
             return False, f"triangle {k} = {t} uses index {bad[0]}, outside 0..{n - 1}"
-    ok, message = check_delaunay(points, triangles)
+    ok, message = verify.check_delaunay(points, triangles)
     if not ok and expected is not None and len(expected) != len(triangles):
         message += f" (a valid answer has {len(expected)} triangles, you gave {len(triangles)})"
     return ok, message
-
-
-def read_answer(text: str) -> list[list[int]]:
-    return read_output(text, [])
-
-
-def main(argv: list[str]) -> int:
-    input_path, answer_path, feedback_dir = argv[1], argv[2], argv[3]
-    try:
-        team = sys.stdin.buffer.read().decode("utf-8")
-        triangles = read_output(team, None)  # malformed output is rejected before any heavy work
-        args = read_input(Path(input_path).read_text())
-        ok, message = check(args, triangles, read_answer(Path(answer_path).read_text()))
-    except UnicodeDecodeError:
-        ok, message = False, "presentation error: the output is not UTF-8 text"
-    except PresentationError as exc:
-        ok, message = False, f"presentation error: {exc}"
-    Path(feedback_dir, "judgemessage.txt").write_text(message + "\n")
-    return 42 if ok else 43
-
-
-if __name__ == "__main__":
-    sys.exit(main(sys.argv))
 
 
 def draw(axes, args: list, received: list[list[int]], expected: list[list[int]] | None) -> None:
