@@ -5,9 +5,9 @@ Two uses, one logic:
 
 * the grader imports this file and calls ``read_input``, ``from_result`` / ``read_output`` and
   ``check`` in its own process (the reference answer never reaches the student's side);
-* Kattis / problemtools run it as an output validator:
-  ``python3 checker.py input answer feedback_dir < team_output`` (exit 42 accept, 43 reject,
-  the reason in ``feedback_dir/judgemessage.txt``).
+* Kattis / problemtools run the exported copy (``python -m grader export-kattis largest-empty-circle OUT``) as an
+  output validator: ``python3 checker.py input answer feedback_dir < team_output`` (exit 42
+  accept, 43 reject, the reason in ``feedback_dir/judgemessage.txt``).
 
 Tolerance: with r* the optimal radius and M the largest absolute coordinate, eps = 1e-6 * r* +
 1e-14 * M. Accepted: |r - r*| <= eps, every point at distance >= r - eps from the centre, and the
@@ -23,11 +23,12 @@ Example:
 from __future__ import annotations
 
 import math
-import sys
-from pathlib import Path
 
 REL_TOL = 1e-6
 ABS_TOL = 1e-14   # times the largest absolute coordinate
+
+
+LIBRARY = ("judge_io",)  # reference_impl/judge_io.py (the points format), bound as a global by the loader
 
 
 class PresentationError(Exception):
@@ -36,14 +37,11 @@ class PresentationError(Exception):
 
 def read_input(text: str) -> list:
     """Parse the input format into the entry function's argument list ``[points]``."""
-    tok = text.split()
-    n = int(tok[0])
-    return [[[float(tok[1 + 2 * i]), float(tok[2 + 2 * i])] for i in range(n)]]
+    return [judge_io.read_points(text)]  # noqa: F821
 
 
 def write_input(args: list) -> str:
-    (points,) = args
-    return f"{len(points)}\n" + "".join(f"{x!r} {y!r}\n" for x, y in points)
+    return judge_io.write_points(args[0])  # noqa: F821
 
 
 def write_output(circle) -> str:
@@ -81,10 +79,6 @@ def read_output(text: str, args: list) -> list[float]:
     except ValueError:
         raise PresentationError(f"expected three numbers 'x y r', got {text[:60]!r}") from None
     return _circle(values, "the printed circle")
-
-
-def read_answer(text: str) -> list[float]:
-    return [float(t) for t in text.split()]
 
 
 def _exact(points: list) -> list[tuple[int, int]]:
@@ -160,20 +154,6 @@ def check(args: list, circle: list[float], expected: list[float]) -> tuple[bool,
     return True, "ok"
 
 
-def main(argv: list[str]) -> int:
-    input_path, answer_path, feedback_dir = argv[1], argv[2], argv[3]
-    try:
-        circle = read_output(sys.stdin.buffer.read().decode("utf-8"), None)
-        args = read_input(Path(input_path).read_text())
-        ok, message = check(args, circle, read_answer(Path(answer_path).read_text()))
-    except UnicodeDecodeError:
-        ok, message = False, "presentation error: the output is not UTF-8 text"
-    except PresentationError as exc:
-        ok, message = False, f"presentation error: {exc}"
-    Path(feedback_dir, "judgemessage.txt").write_text(message + "\n")
-    return 42 if ok else 43
-
-
 def draw(axes, args: list, received: list[float], expected: list[float]) -> None:
     """Picture for reports: the points and their hull with the expected circle (left) and the
     received one (right). ``axes`` is a pair of matplotlib Axes."""
@@ -192,6 +172,3 @@ def draw(axes, args: list, received: list[float], expected: list[float]) -> None
             ax.set_title(f"{title}: r = {c[2]:.6g}", fontsize=9)
         ax.set_aspect("equal", adjustable="datalim")
 
-
-if __name__ == "__main__":
-    sys.exit(main(sys.argv))

@@ -4,9 +4,9 @@ Two uses, one logic (stdlib only):
 
 * the grader imports this file and calls ``read_input``, ``from_result`` / ``read_output`` and
   ``check`` in its own process (the reference answer never reaches the student's side);
-* Kattis / problemtools run it as an output validator:
-  ``python3 checker.py input answer feedback_dir < team_output`` (exit 42 accept, 43 reject,
-  the reason in ``feedback_dir/judgemessage.txt``).
+* Kattis / problemtools run the exported copy (``python -m grader export-kattis obstacle-clearance OUT``) as an
+  output validator: ``python3 checker.py input answer feedback_dir < team_output`` (exit 42
+  accept, 43 reject, the reason in ``feedback_dir/judgemessage.txt``).
 
 Tolerance: r is accepted when |r - r*| <= 1e-6 * r* + 1e-14 * M, where r* is the optimum and
 M the largest absolute coordinate in the input; r* = inf needs r = inf.
@@ -20,11 +20,12 @@ Example:
 from __future__ import annotations
 
 import math
-import sys
-from pathlib import Path
 
 REL_TOL = 1e-6
 ABS_TOL = 1e-14   # times the largest absolute coordinate
+
+
+LIBRARY = ("judge_io",)  # reference_impl/judge_io.py (the points format), bound as a global by the loader
 
 
 class PresentationError(Exception):
@@ -42,8 +43,7 @@ def read_input(text: str) -> list:
 
 def write_input(args: list) -> str:
     points, start, goal = args
-    return (f"{len(points)}\n" + "".join(f"{x!r} {y!r}\n" for x, y in points)
-            + f"{start[0]!r} {start[1]!r}\n{goal[0]!r} {goal[1]!r}\n")
+    return judge_io.write_points(points) + f"{start[0]!r} {start[1]!r}\n{goal[0]!r} {goal[1]!r}\n"  # noqa: F821
 
 
 def write_output(r: float) -> str:
@@ -76,10 +76,6 @@ def read_output(text: str, args: list) -> float:
     return _radius(value, "the printed radius")
 
 
-def read_answer(text: str) -> float:
-    return float(text.split()[0])
-
-
 def tolerance(args: list, expected: float) -> float:
     """The allowed absolute error for this test (see the module docstring)."""
     points, start, goal = args
@@ -101,23 +97,11 @@ def check(args: list, r: float, expected: float) -> tuple[bool, str]:
     return False, f"radius {r!r} is {hint} (expected {expected!r}, tolerance {tol:.3g})"
 
 
-def main(argv: list[str]) -> int:
-    input_path, answer_path, feedback_dir = argv[1], argv[2], argv[3]
-    try:
-        r = read_output(sys.stdin.buffer.read().decode("utf-8"), None)
-        args = read_input(Path(input_path).read_text())
-        ok, message = check(args, r, read_answer(Path(answer_path).read_text()))
-    except UnicodeDecodeError:
-        ok, message = False, "presentation error: the output is not UTF-8 text"
-    except PresentationError as exc:
-        ok, message = False, f"presentation error: {exc}"
-    Path(feedback_dir, "judgemessage.txt").write_text(message + "\n")
-    return 42 if ok else 43
-
-
 def draw(axes, args: list, received: float, expected: float) -> None:
     """Picture for reports: obstacles, start and goal with a disk of the expected radius (left)
     and of the received one (right). ``axes`` is a pair of matplotlib Axes."""
+    from matplotlib.patches import Circle
+
     points, start, goal = args
     for ax, r, title, colour in ((axes[0], expected, "expected", "tab:blue"),
                                  (axes[1], received, "received", "tab:red")):
@@ -126,16 +110,7 @@ def draw(axes, args: list, received: float, expected: float) -> None:
             ax.plot([x], [y], marker="*", color=colour, ms=10)
             ax.annotate(label, (x, y), fontsize=7, xytext=(4, 4), textcoords="offset points")
             if r is not None and math.isfinite(r) and r > 0:
-                ax.add_patch(_circle((x, y), r, colour))
+                ax.add_patch(Circle((x, y), r, fill=False, color=colour, lw=1))
         ax.set_title(f"{title}: r = {r!r}", fontsize=9)
         ax.set_aspect("equal", adjustable="datalim")
 
-
-def _circle(centre, r, colour):
-    from matplotlib.patches import Circle
-
-    return Circle(centre, r, fill=False, color=colour, lw=1)
-
-
-if __name__ == "__main__":
-    sys.exit(main(sys.argv))
