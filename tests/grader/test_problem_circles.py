@@ -170,3 +170,105 @@ def test_lec_hull_matches_scipy_and_reference_passes_brute_force_emptiness():
             w = [rng.random() for _ in hx]
             c = [sum(wi * p[0] for wi, p in zip(w, hx)) / sum(w), sum(wi * p[1] for wi, p in zip(w, hx)) / sum(w)]
             assert min(math.dist(c, p) for p in pts) <= r + 1e-12
+
+
+# ----------------------------------------------------------------------------- voronoi
+TUT = [[[1.0, 1.0], [3.0, 2.0], [5.0, 1.0], [4.0, 4.0]], [0.0, 0.0, 6.0, 5.0]]
+
+
+def _ref_cells(args):
+    from reference_impl import voronoi
+
+    return [c.tolist() for c in voronoi(*args)]
+
+
+def test_voronoi_accepts_every_valid_way_to_write_a_cell():
+    chk = _problem("voronoi").checker
+    ref = _ref_cells(TUT)
+    rotated = [c[1:] + c[:1] for c in ref]
+    assert chk.check(TUT, rotated, ref) == (True, "ok")
+    a, b = ref[3][0], ref[3][1]
+    extra = [ref[0], ref[1], ref[2], [a, [0.5 * a[0] + 0.5 * b[0], 0.5 * a[1] + 0.5 * b[1]], b] + ref[3][2:] + [ref[3][-1]]]
+    assert chk.check(TUT, extra, ref) == (True, "ok")          # a vertex in an edge's middle, a repeated one
+    nudged = [[[x + 1e-12, y - 1e-12] for x, y in c] for c in ref]
+    assert chk.check(TUT, nudged, ref) == (True, "ok")         # within eps = 1e-9 * 6
+
+
+def test_voronoi_rejects_each_kind_of_wrong_cell():
+    chk = _problem("voronoi").checker
+    ref = _ref_cells(TUT)
+    cw = [ref[0][::-1]] + ref[1:]
+    assert "counter-clockwise" in chk.check(TUT, cw, ref)[1]
+    big = [[[0.0, 0.0], [3.0, 0.0], [3.0, 5.0], [0.0, 5.0]]] + ref[1:]
+    assert "is not in the cell of point 0" in chk.check(TUT, big, ref)[1]
+    small = [ref[0][:3]] + ref[1:]                             # a corner cut off
+    assert "misses the corner" in chk.check(TUT, small, ref)[1]
+    outside = [[[x * 1.001, y * 1.001] for x, y in ref[3]] if i == 3 else c for i, c in enumerate(ref)]
+    assert not chk.check(TUT, outside, ref)[0]
+    twice = [ref[0] + ref[0]] + ref[1:]                        # winds around twice
+    assert "winds around" in chk.check(TUT, twice, ref)[1]
+    bowtie = [[ref[0][0], ref[0][2], ref[0][1], ref[0][3]]] + ref[1:]
+    assert not chk.check(TUT, bowtie, ref)[0]
+
+
+def test_voronoi_types_and_sizes_are_strict():
+    chk = _problem("voronoi").checker
+    ref = _ref_cells(TUT)
+    assert chk.from_result(ref, TUT) == ref
+    for bad in (ref[:3], ref + [ref[0]], "cells", None, [ref[0], ref[1], ref[2], [[1.0, 2.0, 3.0]]],
+                [ref[0], ref[1], ref[2], [[True, 1.0], [2.0, 2.0], [0.0, 3.0]]],
+                [ref[0], ref[1], ref[2], [[math.nan, 1.0], [2.0, 2.0], [0.0, 3.0]]],
+                [ref[0], ref[1], ref[2], [[0.0, 0.0]] * 20]):
+        with pytest.raises(chk.PresentationError):
+            chk.from_result(bad, TUT)
+    for bad in ("", "3 0 0 1 0\n" * 4, "x\n" * 4, "1 0 0\n"):
+        with pytest.raises(chk.PresentationError):
+            chk.read_output(bad, TUT)
+
+
+@pytest.mark.parametrize("scale,offset", [(1.0, 0.0), (1e-300, 0.0), (1e300, 0.0), (1.0, 1e9)])
+def test_voronoi_reference_cells_are_right_by_brute_force(scale, offset):
+    """Independent of the checker's tolerance logic: every reference cell vertex is (to float
+    accuracy) no farther from its own site than from the nearest site, the areas tile the box, and
+    an independent O(n^2) construction (the box cut by every bisector) passes the checker."""
+    import importlib.util
+
+    from grader.problems import REPO
+
+    spec = importlib.util.spec_from_file_location("_slow_vor", REPO / "solutions/voronoi/slow_all_pairs.py")
+    slow = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(slow)
+    chk = _problem("voronoi").checker
+    rng = random.Random(11)
+    for _ in range(6):
+        pts = [[offset + scale * rng.randint(0, 6), offset + scale * rng.randint(0, 6)] for _ in range(rng.randint(1, 14))]
+        box = [offset - scale, offset - scale, offset + 7 * scale, offset + 8 * scale]
+        args = [pts, box]
+        ref = _ref_cells(args)
+        assert chk.check(args, slow.voronoi_cells(pts, box), ref) == (True, "ok")
+        unit = 1.0 / scale
+        total = 0.0
+        seen = set()
+        for i, cell in enumerate(ref):
+            for x, y in cell:
+                own = math.hypot((x - pts[i][0]) * unit, (y - pts[i][1]) * unit)
+                near = min(math.hypot((x - p[0]) * unit, (y - p[1]) * unit) for p in pts)
+                assert own <= near + 1e-6
+            if tuple(pts[i]) not in seen:
+                seen.add(tuple(pts[i]))
+                total += chk._area([[(x - offset) * unit, (y - offset) * unit] for x, y in cell])
+        assert total == pytest.approx(8 * 9, rel=1e-9)
+
+
+def test_voronoi_kattis_validator_exit_codes(tmp_path):
+    from grader.checker_runtime import embed
+
+    p = _problem("voronoi")
+    (tmp_path / "checker.py").write_text(embed(p.checker_path.read_text()))
+    (tmp_path / "in").write_text((p.path / "data/sample/2-two-sites.in").read_text())
+    (tmp_path / "ans").write_text((p.path / "data/sample/2-two-sites.ans").read_text())
+    good = "4 1.0 -1.0 1.0 1.0 -1.0 1.0 -1.0 -1.0\n4 1.0 -1.0 3.0 -1.0 3.0 1.0 1.0 1.0\n"
+    for team, code in ((good, 42), (good.replace("3.0 1.0 1.0 1.0", "3.0 1.0 1.2 1.0"), 43), ("1 0 0\n", 43)):
+        r = subprocess.run([sys.executable, str(tmp_path / "checker.py"), str(tmp_path / "in"), str(tmp_path / "ans"),
+                            str(tmp_path)], input=team.encode(), capture_output=True)
+        assert r.returncode == code, (team, (tmp_path / "judgemessage.txt").read_text())
