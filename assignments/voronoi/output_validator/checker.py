@@ -99,9 +99,14 @@ def read_output(text: str, args: list) -> list:
     """Parse program output: one line per input point, ``k x1 y1 ... xk yk``."""
     n = len(args[0]) if args is not None else None
     lines = [ln for ln in text.split("\n") if ln.strip()]
+    if n is not None and len(lines) != n:
+        raise PresentationError(f"expected one line per input point ({n}), got {len(lines)} lines")
+    per_cell = max_vertices(len(lines) if n is None else n)[0]
     rows = []
     for i, ln in enumerate(lines):
         tok = ln.split()
+        if len(tok) > 1 + 2 * per_cell:   # bound the work before converting anything
+            raise PresentationError(f"line {i + 1}: {len(tok)} numbers, more than any correct cell needs")
         try:
             k = int(tok[0])
             vals = [float(t) for t in tok[1:]]
