@@ -18,7 +18,7 @@ Example:
     >>> check([[[0, 0], [4, 0], [4, 4], [0, 4]]], [2.0, 2.0, 8 ** 0.5], [2.0, 2.0, 8 ** 0.5])
     (True, 'ok')
     >>> check([[[0, 0], [4, 0], [4, 4], [0, 4]]], [5.0, 2.0, 8 ** 0.5], [2.0, 2.0, 8 ** 0.5])[1][:42]
-    'point 1 (4.0, 0.0) is strictly inside the c'
+    'point 1 (4, 0) is strictly inside the circ'
 """
 from __future__ import annotations
 
