@@ -35,13 +35,19 @@ def library_names(source: str, filename: str = "checker.py") -> tuple:
     >>> library_names('LIBRARY = ("verify",)\\n')
     ('verify',)
     """
-    for node in ast.parse(source, filename).body:
-        if isinstance(node, ast.Assign) and any(isinstance(t, ast.Name) and t.id == "LIBRARY" for t in node.targets):
-            value = ast.literal_eval(node.value)
-            if not isinstance(value, (tuple, list)) or not all(isinstance(v, str) and v.isidentifier() for v in value):
-                raise ValueError(f"{filename}: LIBRARY must be a tuple of module names, got {value!r}")
-            return tuple(value)
-    return ()
+    node = _library_node(source, filename)
+    if node is None:
+        return ()
+    value = ast.literal_eval(node.value)
+    if not isinstance(value, (tuple, list)) or not all(isinstance(v, str) and v.isidentifier() for v in value):
+        raise ValueError(f"{filename}: LIBRARY must be a tuple of module names, got {value!r}")
+    return tuple(value)
+
+
+def _library_node(source: str, filename: str = "checker.py"):
+    """The module-level ``LIBRARY = ...`` statement, or ``None``."""
+    return next((node for node in ast.parse(source, filename).body if isinstance(node, ast.Assign)
+                 and any(isinstance(t, ast.Name) and t.id == "LIBRARY" for t in node.targets)), None)
 
 
 def bind_library(namespace: dict, sources: dict) -> None:
@@ -104,20 +110,25 @@ def kattis_main(namespace: dict, argv: list) -> int:
 
 
 def embed(checker_source: str, library_dir=None) -> str:
-    """The self-contained Kattis copy of a checker: its source, then this runtime and the library
-    modules it names (as string constants ``EMBEDDED_<NAME>_SOURCE``), then the ``__main__`` entry."""
+    """The self-contained Kattis copy of a checker: this runtime and the library modules it names
+    (as string constants ``EMBEDDED_<NAME>_SOURCE``) inserted right after its ``LIBRARY`` line
+    (so module-level code may use them, as in the checkout), and the ``__main__`` entry at the end."""
     lib = Path(library_dir) if library_dir else LIBRARY_DIR
     names = library_names(checker_source)
-    lines = ["", "", "# ---- appended by `python -m grader export-kattis`: the shared checker runtime and the",
+    block = ["# ---- inserted by `python -m grader export-kattis`: the shared checker runtime and the",
              "# ---- library modules named in LIBRARY, so that this file runs on its own as a Kattis",
              "# ---- output validator: python3 checker.py input answer feedback_dir < team_output",
              f"EMBEDDED_CHECKER_RUNTIME_SOURCE = {Path(__file__).read_text()!r}"]
     for name in names:
-        lines.append(f"EMBEDDED_{name.upper()}_SOURCE = {(lib / f'{name}.py').read_text()!r}")
-    lines += ['_checker_runtime = {"__name__": "checker_runtime"}',
+        block.append(f"EMBEDDED_{name.upper()}_SOURCE = {(lib / f'{name}.py').read_text()!r}")
+    block += ['_checker_runtime = {"__name__": "checker_runtime"}',
               'exec(compile(EMBEDDED_CHECKER_RUNTIME_SOURCE, "checker_runtime.py", "exec"), _checker_runtime)',
               '_checker_runtime["bind_library"](globals(), {'
               + ", ".join(f"{n!r}: EMBEDDED_{n.upper()}_SOURCE" for n in names) + "})",
-              'if __name__ == "__main__":',
-              '    raise SystemExit(_checker_runtime["kattis_main"](globals(), __import__("sys").argv))', ""]
-    return checker_source.rstrip("\n") + "\n".join(lines)
+              "# ---- end of the inserted block"]
+    lines = checker_source.rstrip("\n").split("\n")
+    node = _library_node(checker_source)
+    at = node.end_lineno if node is not None else len(lines)
+    main = ["", "", 'if __name__ == "__main__":',
+            '    raise SystemExit(_checker_runtime["kattis_main"](globals(), __import__("sys").argv))', ""]
+    return "\n".join(lines[:at] + block + lines[at:] + main)

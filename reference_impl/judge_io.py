@@ -18,7 +18,7 @@ Run the doctests: python -m doctest reference_impl/judge_io.py
 import math
 
 __all__ = ["PresentationError", "read_points", "write_points", "as_index", "index_rows", "read_index_rows",
-           "write_index_rows"]
+           "write_index_rows", "draw_edges"]
 
 
 class PresentationError(Exception):
@@ -114,3 +114,21 @@ def write_index_rows(rows) -> str:
     '2\\n0 1\\n1 2\\n'
     """
     return f"{len(rows)}\n" + "".join(" ".join(str(int(v)) for v in row) + "\n" for row in rows)
+
+
+def draw_edges(axes, points, received, expected, expected_title: str) -> None:
+    """Report picture for graph answers: ``expected`` edges on ``axes[0]``, ``received`` on
+    ``axes[1]`` (a pair of matplotlib Axes; nothing is imported here), indices shown up to 30 points."""
+    xs, ys = [p[0] for p in points], [p[1] for p in points]
+    n = len(points)
+    for ax, edges, title, colour in ((axes[0], expected or [], expected_title, "tab:blue"),
+                                     (axes[1], received or [], "received", "tab:red")):
+        for i, j in edges:
+            if 0 <= i < n and 0 <= j < n:
+                ax.plot([xs[i], xs[j]], [ys[i], ys[j]], color=colour, lw=1.0)
+        ax.scatter(xs, ys, s=12, color="black", zorder=3)
+        if n <= 30:
+            for i, (x, y) in enumerate(points):
+                ax.annotate(str(i), (x, y), fontsize=7, xytext=(3, 3), textcoords="offset points")
+        ax.set_title(f"{title}: {len(edges)} edges", fontsize=9)
+        ax.set_aspect("equal", adjustable="datalim")

@@ -8,8 +8,9 @@ Two uses, one logic:
   output validator: ``python3 checker.py input answer feedback_dir < team_output`` (exit 42
   accept, 43 reject, the reason in ``feedback_dir/judgemessage.txt``).
 
-The exact test itself is ``reference_impl.verify.check_delaunay`` (Python integers), named in
-``LIBRARY``: the shared loader (``grader/checker_runtime.py``) binds it without importing the rest
+The exact test itself is ``reference_impl.verify.check_delaunay`` (Python integers), and the
+text formats and strict typing are ``reference_impl.judge_io``'s, both named in ``LIBRARY``: the
+shared loader (``grader/checker_runtime.py``) binds it without importing the rest
 of ``reference_impl`` (which would pull in numba), and ``export-kattis`` embeds it together with
 the Kattis entry point.
 
@@ -19,74 +20,37 @@ Example:
 """
 from __future__ import annotations
 
-import math
+LIBRARY = ("judge_io", "verify")  # reference_impl/<name>.py, bound as globals by the shared loader
 
-LIBRARY = ("verify",)  # reference_impl/verify.py, bound as the global `verify` by the shared loader
-
-
-class PresentationError(Exception):
-    """The output has the wrong shape or type (verdict PE), as opposed to a wrong triangulation."""
+PresentationError = judge_io.PresentationError  # noqa: F821 - bound by the loader
 
 
 def read_input(text: str) -> list:
     """Parse the input format into the entry function's argument list ``[points]``."""
-    tok = text.split()
-    n = int(tok[0])
-    return [[[float(tok[1 + 2 * i]), float(tok[2 + 2 * i])] for i in range(n)]]
+    return [judge_io.read_points(text)]  # noqa: F821
 
 
 def write_input(args: list) -> str:
-    (points,) = args
-    return f"{len(points)}\n" + "".join(f"{x!r} {y!r}\n" for x, y in points)
+    return judge_io.write_points(args[0])  # noqa: F821
 
 
 def write_output(triangles: list) -> str:
-    return f"{len(triangles)}\n" + "".join(f"{a} {b} {c}\n" for a, b, c in triangles)
+    return judge_io.write_index_rows(triangles)  # noqa: F821
 
 
-def _index(v, where: str) -> int:
-    if type(v) is int:
-        return v
-    if type(v) is float:
-        hint = " (not a number)" if math.isnan(v) else " (use integer indices: dtype=int)"
-        raise PresentationError(f"{where}: vertex index {v!r} is a float{hint}")
-    raise PresentationError(f"{where}: vertex index {v!r} is a {type(v).__name__}, not an int")
+def _limit(args) -> int:
+    """Any triangulation of n points has fewer than 2n triangles: more is rejected at once."""
+    return 2 * len(args[0]) + 8 if args else 1 << 62
 
 
 def from_result(value, args: list) -> list[list[int]]:
     """Type-check what the entry function returned (JSON data): a list of [i, j, k] int triples."""
-    if not isinstance(value, list):
-        raise PresentationError(f"expected a list of triangles, got {type(value).__name__}: {str(value)[:60]}")
-    out = []
-    for k, t in enumerate(value):
-        if not isinstance(t, list) or len(t) != 3:
-            raise PresentationError(f"triangle {k} should be 3 vertex indices, got {str(t)[:60]}")
-        out.append([_index(v, f"triangle {k}") for v in t])
-    return out
+    return judge_io.index_rows(value, 3, "triangle", _limit(args))  # noqa: F821
 
 
 def read_output(text: str, args: list) -> list[list[int]]:
     """Parse program output: m, then m lines 'i j k'."""
-    lines = text.split("\n")
-    if not lines or not lines[0].strip():
-        raise PresentationError("empty output: expected the number of triangles on the first line")
-    try:
-        m = int(lines[0].strip())
-    except ValueError:
-        raise PresentationError(f"first line should be the number of triangles, got {lines[0][:60]!r}") from None
-    body = [ln for ln in lines[1:] if ln.strip()]
-    if m < 0 or len(body) != m:
-        raise PresentationError(f"announced {m} triangles but {len(body)} lines follow")
-    out = []
-    for k, ln in enumerate(body):
-        parts = ln.split()
-        if len(parts) != 3:
-            raise PresentationError(f"line {k + 2}: expected 'i j k', got {ln[:60]!r}")
-        try:
-            out.append([int(p) for p in parts])
-        except ValueError:
-            raise PresentationError(f"line {k + 2}: indices must be integers, got {ln[:60]!r}") from None
-    return out
+    return judge_io.read_index_rows(text, 3, "triangle", _limit(args))  # noqa: F821
 
 
 def check(args: list, triangles: list[list[int]], expected: list[list[int]] | None) -> tuple[bool, str]:
