@@ -28,11 +28,9 @@ REL_TOL = 1e-6
 ABS_TOL = 1e-14   # times the largest absolute coordinate
 
 
-LIBRARY = ("judge_io",)  # reference_impl/judge_io.py (the points format), bound as a global by the loader
+LIBRARY = ("judge_io",)  # reference_impl/judge_io.py (points format, PresentationError), bound by the loader
 
-
-class PresentationError(Exception):
-    """The output has the wrong shape or type (verdict PE), as opposed to a wrong circle."""
+PresentationError = judge_io.PresentationError  # noqa: F821 - bound by the loader
 
 
 def read_input(text: str) -> list:

@@ -29,14 +29,12 @@ from __future__ import annotations
 
 import math
 
-LIBRARY = ("judge_io",)  # reference_impl/judge_io.py (the points format), bound as a global by the loader
+LIBRARY = ("judge_io",)  # reference_impl/judge_io.py (points format, PresentationError), bound by the loader
 
 REL_TOL = 1e-9    # times the larger side of the box
 ABS_TOL = 1e-14   # times the largest absolute coordinate
 
-
-class PresentationError(Exception):
-    """The output has the wrong shape or type (verdict PE), as opposed to a wrong cell."""
+PresentationError = judge_io.PresentationError  # noqa: F821 - bound by the loader
 
 
 def read_input(text: str) -> list:
