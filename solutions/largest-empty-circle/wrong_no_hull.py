@@ -1,8 +1,8 @@
 """Wrong answer: the largest circumcircle of a Delaunay triangle, with no regard for the hull.
 
 The mistake: every Delaunay circumcircle is empty, but its centre can lie far outside the convex
-hull (a flat triangle on the hull has a huge circumcircle). Killed by the tiny group (the
-tutorial's points: the circle of (1,1), (3,2), (5,1) is centred at (3, -1.5)).
+hull (a flat triangle on the hull has a huge circumcircle). Killed by sample 1 and tiny 01 (the
+points (1,1), (3,2), (5,1), (4,4): the circle of (1,1), (3,2), (5,1) is centred at (3, -1.5)).
 
 Function mode: largest_empty_circle(points). Stdio: python3 wrong_no_hull.py < input
 """

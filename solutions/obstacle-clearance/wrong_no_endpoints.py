@@ -2,7 +2,7 @@
 
 The mistake: only the gaps the disk squeezes through are counted; a start (or goal) close to an
 obstacle, or both in one triangle, is forgotten (the answer is then inf or a gap too wide).
-Killed by the tiny group (the tutorial's points with the start near an obstacle).
+Killed by sample 1 and tiny 01 (the points (1,1), (3,2), (5,1), (4,4), the start 1.02 from (3,2)).
 
 Function mode: max_clearance(points, start, goal). Stdio: python3 wrong_no_endpoints.py < input
 """

@@ -2,7 +2,7 @@
 
 The mistake: the answer is taken as the distance from the segment start-goal to its nearest
 obstacle, as if the disk could not go around; a detour often keeps a wider clearance.
-Killed by the tiny group (the tutorial's points, going around the triangle).
+Killed by sample 1 and tiny 01 (the straight way up passes through the obstacle (4,4)).
 
 Function mode: max_clearance(points, start, goal). Stdio: python3 wrong_straight_line.py < input
 """
