@@ -272,3 +272,4 @@ def test_voronoi_kattis_validator_exit_codes(tmp_path):
         r = subprocess.run([sys.executable, str(tmp_path / "checker.py"), str(tmp_path / "in"), str(tmp_path / "ans"),
                             str(tmp_path)], input=team.encode(), capture_output=True)
         assert r.returncode == code, (team, (tmp_path / "judgemessage.txt").read_text())
+
