@@ -130,8 +130,8 @@ class Problem:
             errors.append("statement/problem.en.md is missing")
         if not self.checker_path.is_file():
             errors.append(f"checker {self.checker_path} is missing")
-        if not list((self.path / "input_validators").glob("*")):
-            errors.append("input_validators/ is empty")
+        if not (self.path / "input_validators").is_dir() or not self.input_validators():
+            errors.append("input_validators/ holds no validator program (<name>.py, or <dir>/main.py)")
         names = [g.name for g in self.groups]
         if len(set(names)) != len(names):
             errors.append("group names repeat")
@@ -157,10 +157,23 @@ class Problem:
 
         return validate_checker(self)
 
+    def input_validators(self) -> list[Path]:
+        """The validator programs: each ``input_validators/<name>.py``, and for each directory (one
+        program, as Kattis sees it) its ``main.py``, else its ``<name>.py``."""
+        out = []
+        for entry in sorted((self.path / "input_validators").iterdir()):
+            if entry.is_dir():
+                main = next((f for f in (entry / "main.py", entry / f"{entry.name}.py") if f.is_file()), None)
+                if main is not None:
+                    out.append(main)
+            elif entry.suffix == ".py":
+                out.append(entry)
+        return out
+
     def validate_inputs(self) -> list[str]:
         """Run the package's input validators on every test input (Kattis: exit 42 = valid)."""
         errors = []
-        validators = sorted(p for p in (self.path / "input_validators").rglob("*.py"))
+        validators = self.input_validators()
         for t in self.tests():
             for v in validators:
                 r = subprocess.run([sys.executable, str(v)], input=t.input_text, text=True, capture_output=True)
