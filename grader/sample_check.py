@@ -87,7 +87,7 @@ def picture_png(problem: Problem, result: JudgeResult, entry_fn=None) -> bytes |
     args = problem.checker.read_input(test.input_text)
     if args and hasattr(args[0], "__len__") and len(args[0]) > MAX_DRAW_ITEMS:
         return None
-    expected = problem.checker.read_answer(test.answer_text) if test.answer_text else None
+    expected = problem.read_answer(test, args)
     received = bad.received if bad else None
     if received is None and entry_fn is not None and result.verdict == "AC":
         try:

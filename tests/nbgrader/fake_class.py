@@ -199,7 +199,7 @@ def judge_json(problem_id: str, path: Path) -> dict:
 
     buf = io.StringIO()
     with contextlib.redirect_stdout(buf):
-        assert main(["judge", problem_id, str(path), "--json"]) == 0
+        assert main(["judge", problem_id, str(path), "--json"]) in (0, 1)  # 1: a verdict other than AC
     return json.loads(buf.getvalue())
 
 

@@ -60,7 +60,7 @@ def test_nothing_hidden(edition):
     for f, text in texts.items():
         assert "### BEGIN SOLUTION" not in text, f
         assert not [ln for ln in sol_lines if ln in text], f"{f} holds reference solution code"
-        leaked = [tok for tok in hidden if tok in text]
+        leaked = [tok for tok in hidden if tok in text and tok not in library]  # the library is public
         assert not leaked, f"{f} holds hidden test numbers {leaked[:3]}"
 
 
@@ -76,7 +76,7 @@ def test_local_judge_runs_the_samples_only(edition):
     p = list_problems()[0]
     r = subprocess.run([sys.executable, "-m", "grader", "judge", p.id, f"exercises/{p.id}/{p.id}.ipynb", "--json"],
                        cwd=edition, capture_output=True, text=True, timeout=600)
-    assert r.returncode == 0, r.stderr
+    assert r.returncode == 1, r.stderr  # the judge exits 1 for any verdict but AC
     out = json.loads(r.stdout)
     assert {t["group"] for t in out["tests"]} == {"sample"}
     assert out["verdict"] == "CE"  # the released stub defines no entry function yet
