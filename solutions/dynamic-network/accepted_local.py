@@ -1,16 +1,18 @@
 """Accepted solution for `dynamic-network`: a Delaunay triangulation updated locally.
 
 A join is one Bowyer-Watson insertion (walk to the new point, grow the cavity of triangles whose
-circumcircle contains it, connect its boundary to the point); a failure removes the node's star
-and fills the hole by cutting "Delaunay ears" from its ring of neighbours (an ear whose circle
-holds no other ring vertex), in time polynomial in the node's degree only. Ghost triangles (an
-infinite vertex INF joined to every hull edge) make hull nodes no special case. A neighbour
-query walks around the node and drops the edges whose two triangles are cocircular (tie
-diagonals), which gives the strict Delaunay graph. Coordinates are exact: every double is an
-integer over a power of two, so all of them are scaled by the largest denominator among the joins
-(read before the first operation) and every predicate is computed on Python integers. While the live positions are all collinear
-(or fewer than 3), neighbours are the adjacent positions along the line. Coincident nodes share
-one vertex.
+circumcircle contains it, connect its boundary to the point); the walk starts at the live position
+joined last in the finest cell of a quadtree-like grid around the new point (the bounding box of
+all joins is read before the first operation), so it is a few steps long in any join order; a
+failure removes the node's star and fills the hole by cutting "Delaunay ears" from its ring of
+neighbours (an ear whose circle holds no other ring vertex), in time polynomial in the node's
+degree only. Ghost triangles (an infinite vertex INF joined to every hull edge) make hull nodes no
+special case. A neighbour query walks around the node and drops the edges whose two triangles are
+cocircular (tie diagonals), which gives the strict Delaunay graph. Coordinates are exact: every
+double is an integer over a power of two, so all of them are scaled by the largest denominator
+among the joins (read before the first operation) and every predicate is computed on Python
+integers. While the live positions are all collinear (or fewer than 3), neighbours are the adjacent
+positions along the line. Coincident nodes share one vertex.
 
 Function mode: the grader calls process(operations). Stdio mode / Kattis: python3 accepted_local.py < input
 
