@@ -21,8 +21,16 @@ $(STAMP): pyproject.toml
 demo: setup
 	$(PY) -m reference_impl demo
 
+# Test files run in parallel (pytest-xdist); a module that builds one expensive fixture (the
+# nbgrader class, the JupyterLab server) stays on one worker through its xdist_group mark.
+JOBS ?= 2
 test: setup chromium
-	$(PY) -m pytest
+	$(PY) -m pytest -n $(JOBS) --dist loadgroup
+
+# JupyterLab refuses to run as root without --allow-root (course containers and CI run as root).
+# LAB_ARGS passes extra options, e.g. make lab LAB_ARGS="--no-browser --port=8899".
+LAB_ROOT := $(if $(filter 0,$(shell id -u)),--allow-root,)
+LAB_ARGS ?=
 
 # The browser test drives Debian's chromium (Playwright never downloads a browser here).
 chromium:
@@ -31,7 +39,7 @@ chromium:
 	  || echo "chromium is not installed: tests/browser will be skipped (apt-get install chromium)"
 
 lab: setup
-	$(VENV)/bin/jupyter lab notebooks
+	$(VENV)/bin/jupyter lab $(LAB_ROOT) $(LAB_ARGS) notebooks
 
 bench: setup
 	$(PY) benchmarks/bench_delaunay.py

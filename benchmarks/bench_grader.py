@@ -1,4 +1,4 @@
-"""Benchmark of the judge's own cost (SPEC section 8: under 1.5 s of overhead for 30 tests).
+"""Benchmark of the judge's own cost (target: under 1.5 s of overhead for 30 tests).
 
 1. Judge overhead: a trivial-compute submission on a 30-test function-mode problem; overhead =
    judge wall time minus the submission's own measured time, in-process and via the CLI.

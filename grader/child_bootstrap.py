@@ -5,7 +5,11 @@ Standard library only, and never imported by the grader itself. It
 1. installs an audit hook (PEP 578) that reports forbidden imports and operations (creating
    processes, signalling other processes, sockets, reading or listing files outside the Python
    installation and the working directory, writing outside the working directory) to the parent
-   on the control pipe *before* refusing them, so catching the exception does not hide it;
+   on the control pipe *before* refusing them, so catching the exception does not hide it.
+   Compiled engines of forbidden libraries (``matplotlib._qhull``: ``ENGINES`` in the config)
+   are violations whoever imports them; a forbidden wrapper that allowed libraries import
+   themselves (``matplotlib.tri``, imported by ``matplotlib.pyplot``) is a violation only when
+   the student's code imports it. Messages name the student's line that led there;
 2. reads the submission source from the control pipe and runs it (as module ``submission`` in
    function mode, as ``__main__`` in stdio mode);
 3. function mode: serves calls of the entry function, one JSON line per request/response.
@@ -35,6 +39,13 @@ import types
 CONFIG = json.loads(sys.argv[1])
 CTL_IN, CTL_OUT = CONFIG["ctl_in"], CONFIG["ctl_out"]
 FORBIDDEN = tuple(CONFIG["forbidden"])
+#: compiled engine module -> engine name ("matplotlib._qhull" -> "Qhull"): forbidden whoever imports it
+ENGINES = dict(CONFIG.get("engines", {}))
+#: forbidden modules that allowed libraries import themselves (pyplot imports matplotlib.tri)
+LIBRARY_IMPORTS = tuple(CONFIG.get("library_imports", ()))
+ENGINE_API = {k: tuple(v) for k, v in CONFIG.get("engine_api", {}).items()}
+#: shared-library name prefixes of the engines ("libqhull"): loading one by path is a violation
+ENGINE_LIBS = tuple(CONFIG.get("engine_libs", ()))
 READ_ROOTS = tuple(CONFIG["read_roots"]) + (f"/proc/{os.getpid()}",)
 WRITE_ROOTS = tuple(CONFIG["write_roots"])
 SUBMISSION_FILE = CONFIG["filename"]
@@ -45,6 +56,10 @@ class SandboxViolation(BaseException):
 
 
 def _send(obj):
+    try:  # what the submission printed so far reaches its file before the reply (shown for failing tests)
+        sys.stdout.flush()
+    except BaseException:  # noqa: BLE001 - a flood (EFBIG) is judged by the parent
+        pass
     data = (json.dumps(obj, allow_nan=True, separators=(",", ":")) + "\n").encode()
     view = memoryview(data)
     while view:
@@ -66,8 +81,140 @@ def _violation(message):
     raise SandboxViolation(message)
 
 
+def _matches(name, prefixes):
+    return any(name == f or name.startswith(f + ".") for f in prefixes)
+
+
 def _forbidden_module(name):
-    return any(name == f or name.startswith(f + ".") for f in FORBIDDEN)
+    return _matches(name, FORBIDDEN)
+
+
+_G = globals()
+
+
+def _frames():
+    """Frames from the innermost outward, without this bootstrap's own."""
+    f = sys._getframe(1)
+    while f is not None:
+        if f.f_globals is not _G:
+            yield f
+        f = f.f_back
+
+
+def _is_machinery(f):
+    name = f.f_globals.get("__name__", "")
+    return f.f_code.co_filename.startswith("<frozen ") or name == "importlib" or name.startswith("importlib.")
+
+
+def _is_library(f):
+    path = f.f_code.co_filename
+    return f.f_code.co_filename != SUBMISSION_FILE and path.startswith("/") and _under(path, READ_ROOTS) \
+        and not _under(path, WRITE_ROOTS)
+
+
+def _context():
+    """Where the student's code did it: ' (at line N of your code: ...)', or ' (in LIBRARY,
+    called from line N of your code: ...)' when a library acted on the student's behalf."""
+    lib = None
+    for f in _frames():
+        if f.f_code.co_filename == SUBMISSION_FILE:
+            src = linecache.getline(SUBMISSION_FILE, f.f_lineno).strip()[:120]
+            where = f"line {f.f_lineno} of your code: {src}"
+            return f" (in {lib}, called from {where})" if lib else f" (at {where})"
+        if lib is None and not _is_machinery(f):
+            lib = str(f.f_globals.get("__name__", f.f_code.co_filename))
+    return f" (in {lib})" if lib else ""
+
+
+def _by_library():
+    importer = next((f for f in _frames() if not _is_machinery(f)), None)
+    return importer is not None and _is_library(importer)
+
+
+def _engine_of(name):
+    return next((ENGINES[m] for m in ENGINES if name == m or name.startswith(m + ".")), None)
+
+
+def _check_import(name):
+    """Violation for an engine module imported by the student's code (a library gets a stand-in,
+    see :class:`_EngineStandIn`) or a forbidden module (unless it is one that allowed libraries
+    import themselves, and a library imports it)."""
+    engine = _engine_of(name)
+    if engine is not None:
+        if not _by_library():
+            _violation(f"the {engine} library ('{name}') is forbidden in this problem{_context()}")
+        return
+    if _forbidden_module(name):
+        if _matches(name, LIBRARY_IMPORTS) and _by_library():
+            return
+        _violation(f"import of forbidden module '{name}'{_context()}")
+
+
+def _engine_file(path):
+    """The engine a file is a copy of, by its name ('.../spatial/_qhull.cpython-311-...so'), or None."""
+    path = os.fsdecode(path) if isinstance(path, bytes) else str(path)
+    base = os.path.basename(path)
+    parent, stem = os.path.basename(os.path.dirname(path)), base.split(".", 1)[0]
+    for module, engine in ENGINES.items():
+        parts = module.split(".")
+        if stem == parts[-1] and (len(parts) < 2 or parent == parts[-2]) and "." in base:
+            return engine
+    if ENGINE_LIBS and base.startswith(ENGINE_LIBS):
+        return "a forbidden"
+    return None
+
+
+def _guard_extension_loading():
+    """Loading an engine's compiled file by path (``ExtensionFileLoader``, any copy, any name)
+    goes through ``_imp.create_dynamic``: refuse it there."""
+    import _imp
+    real = _imp.create_dynamic
+
+    def create_dynamic(spec, *rest):
+        origin = getattr(spec, "origin", None) or ""
+        engine = _engine_file(origin)
+        if engine is not None:
+            _violation(f"loading '{origin}' (the {engine} library) is forbidden in this problem{_context()}")
+        return real(spec, *rest)
+
+    _imp.create_dynamic = create_dynamic
+
+
+class _EngineStandIn(types.ModuleType):
+    """What a library gets for a forbidden engine (``from ._qhull import *`` in scipy.spatial):
+    every name is a class whose use (call, instantiation) is a violation naming the student's line."""
+
+    def __init__(self, name):
+        super().__init__(name)
+        self.__all__ = list(ENGINE_API.get(name, ()))
+        for attr in self.__all__:
+            setattr(self, attr, self._stub(attr))
+
+    def _stub(self, attr):
+        module, engine = self.__name__, _engine_of(self.__name__)
+
+        def refuse(*args, **kwargs):
+            _violation(f"the {engine} library ({module}.{attr}) is forbidden in this problem{_context()}")
+
+        if attr.endswith("Error"):
+            return type(attr, (RuntimeError,), {"__module__": module})
+        return type(attr, (), {"__module__": module, "__new__": refuse})
+
+    def __getattr__(self, attr):
+        if attr.startswith("__pyx") or not attr.startswith("__"):  # Cython's C-level import too
+            _violation(f"the {_engine_of(self.__name__)} library ({self.__name__}.{attr}) is forbidden in "
+                       f"this problem{_context()}")
+        raise AttributeError(attr)
+
+
+class _StandInLoader:
+    @staticmethod
+    def create_module(spec):
+        return _EngineStandIn(spec.name)
+
+    @staticmethod
+    def exec_module(module):
+        pass
 
 
 def _under(path, roots):
@@ -92,8 +239,8 @@ _WRITE_FLAGS = os.O_WRONLY | os.O_RDWR | os.O_APPEND | os.O_CREAT | os.O_TRUNC
 
 def _audit(event, args):
     if event == "import":
-        if _forbidden_module(args[0]):
-            _violation(f"import of forbidden module '{args[0]}'")
+        if isinstance(args[0], str):
+            _check_import(args[0])
     elif event == "open":
         path = _norm(args[0])
         if path is None:
@@ -102,22 +249,26 @@ def _audit(event, args):
         writing = (isinstance(mode, str) and any(c in mode for c in "wax+")) or (flags & _WRITE_FLAGS)
         if writing:
             if not _under(path, WRITE_ROOTS) and path != "/dev/null":
-                _violation(f"writing '{path}' (outside the working directory) is not allowed")
+                _violation(f"writing '{path}' (outside the working directory) is not allowed{_context()}")
         elif not _under(path, READ_ROOTS):
-            _violation(f"reading '{path}' (outside the working directory) is not allowed")
+            _violation(f"reading '{path}' (outside the working directory) is not allowed{_context()}")
     elif event in ("os.listdir", "os.scandir"):
         path = _norm(args[0] if args and args[0] is not None else ".")
         if path is not None and not _under(path, READ_ROOTS):
-            _violation(f"listing '{path}' (outside the working directory) is not allowed")
+            _violation(f"listing '{path}' (outside the working directory) is not allowed{_context()}")
+    elif event == "ctypes.dlopen":
+        engine = _engine_file(args[0]) if args and args[0] else None
+        if engine is not None:
+            _violation(f"loading '{args[0]}' (the {engine} library) is forbidden in this problem{_context()}")
     elif event in _PROCESS_EVENTS:
-        _violation(f"operation '{event}' is not allowed (no processes, signals or environment changes)")
+        _violation(f"operation '{event}' is not allowed (no processes, signals or environment changes){_context()}")
     elif event in _NET_EVENTS:
-        _violation(f"network operation '{event}' is not allowed")
+        _violation(f"network operation '{event}' is not allowed{_context()}")
     elif event in ("os.remove", "os.rename", "os.rmdir", "os.mkdir", "os.chmod", "os.chown", "os.symlink",
                    "os.link", "os.truncate", "shutil.rmtree", "os.utime"):
         path = _norm(args[0]) if args else None
         if path is not None and not _under(path, WRITE_ROOTS):
-            _violation(f"operation '{event}' on '{path}' is not allowed")
+            _violation(f"operation '{event}' on '{path}' is not allowed{_context()}")
 
 
 class _ImportGuard:
@@ -126,8 +277,10 @@ class _ImportGuard:
 
     @staticmethod
     def find_spec(name, path=None, target=None):
-        if _forbidden_module(name):
-            _violation(f"import of forbidden module '{name}'")
+        _check_import(name)
+        if _engine_of(name) is not None:  # a library's import: the stand-in, never the engine
+            import importlib.machinery
+            return importlib.machinery.ModuleSpec(name, _StandInLoader)
         return None
 
     @staticmethod
@@ -199,6 +352,7 @@ def main():
     sys.argv = [SUBMISSION_FILE]
     sys.path[:0] = [os.getcwd()]
     sys.meta_path.insert(0, _ImportGuard)
+    _guard_extension_loading()
     sys.addaudithook(_audit)
     sys.setrecursionlimit(CONFIG.get("recursion_limit", 10000))
     mode = CONFIG["mode"]

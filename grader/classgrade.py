@@ -5,20 +5,32 @@ is known, so a killed batch resumes where it stopped. ``--scheduler ADDRESS`` se
 student to a Dask distributed cluster instead; the client then commits each student's results
 when the job returns (workers may not share our disk).
 
+Every student folder gets a CSV row: an empty folder (no .py/.ipynb file) scores 0 with the note
+"no submission"; when a folder holds several candidate files, the note (and a line on stderr)
+says which one was judged and why. The progress display names the students being judged and
+counts the tests done, including results resumed from the store after an interrupted batch.
+``--reports DIR`` also writes ``DIR/index.html``, linking every student's report.
+
 Example:
     python -m grader grade delaunay class/ --db results.sqlite --jobs 2 --csv grades.csv
 """
 
 from __future__ import annotations
 
+import csv
+import ctypes
 import hashlib
+import os
+import signal
 import sys
 import time
-from concurrent.futures import ProcessPoolExecutor, as_completed
+from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Iterable
 
+from .submissions import SubmissionError, read_submission_bytes
+from .text import clean, csv_cell
 from .judge import Judge
 from .problems import load_problem
 from .store import ResultStore
@@ -31,27 +43,77 @@ class Job:
     path: str
     sha: str
     submitted_at: float
+    note: str = ""  #: why this file was chosen, when the folder held several
+
+
+NO_SUBMISSION = "no submission (no .py or .ipynb file in the folder)"
+
+
+def choose_submission(student_dir: Path, problem: str) -> tuple[Path | None, str]:
+    """The student's file and, when there were several candidates, why it was chosen:
+    ``<problem>.py``/``.ipynb`` if present, else the newest .py/.ipynb.
+
+    >>> import tempfile; d = Path(tempfile.mkdtemp())
+    >>> _ = (d / "a.py").write_text(""); _ = (d / "delaunay.py").write_text("")
+    >>> f, why = choose_submission(d, "delaunay"); f.name, why
+    ('delaunay.py', 'judged delaunay.py of 2 files (a.py, delaunay.py): it is named after the problem')
+    """
+    files = sorted(p for p in student_dir.iterdir() if p.is_file() and p.suffix in (".py", ".ipynb"))
+    named = [p for p in files if p.stem == problem]
+    pool = named or files
+    if not pool:
+        return None, NO_SUBMISSION
+    chosen = max(pool, key=lambda p: (p.stat().st_mtime, p.name))
+    if len(files) == 1:
+        return chosen, ""
+    why = "it is named after the problem" if named else "it is the most recently modified"
+    if len(named) > 1:
+        why += " and the most recently modified of those"
+    return chosen, f"judged {chosen.name} of {len(files)} files ({', '.join(p.name for p in files)}): {why}"
 
 
 def find_submission(student_dir: Path, problem: str) -> Path | None:
-    """The student's file: ``<problem>.py``/``.ipynb`` if present, else the newest .py/.ipynb."""
-    files = [p for p in student_dir.iterdir() if p.is_file() and p.suffix in (".py", ".ipynb")]
-    named = [p for p in files if p.stem == problem]
-    pool = named or files
-    return max(pool, key=lambda p: (p.stat().st_mtime, p.name)) if pool else None
+    """The student's file (see :func:`choose_submission`), or None."""
+    return choose_submission(student_dir, problem)[0]
+
+
+def _student_dirs(root: str | Path) -> list[Path]:
+    root = Path(root)
+    if not root.is_dir():
+        raise ValueError(f"submissions directory {root} does not exist (expected submissions/<student>/<file>)")
+    return sorted(p for p in root.iterdir() if p.is_dir())
 
 
 def discover(root: str | Path, problem: str) -> list[Job]:
     """One job per student directory under ``root`` that holds a submission."""
-    root = Path(root)
-    if not root.is_dir():
-        raise ValueError(f"submissions directory {root} does not exist (expected submissions/<student>/<file>)")
     jobs = []
-    for d in sorted(p for p in root.iterdir() if p.is_dir()):
-        f = find_submission(d, problem)
+    for d in _student_dirs(root):
+        f, why = choose_submission(d, problem)
         if f is not None:
-            jobs.append(Job(d.name, str(f), hashlib.sha256(f.read_bytes()).hexdigest()[:16], f.stat().st_mtime))
+            try:  # links, special files and oversize files are not read: judging reports them as CE
+                data = read_submission_bytes(f)
+            except SubmissionError as exc:
+                data = f"unreadable: {exc}".encode()
+            jobs.append(Job(clean(d.name, 200), str(f), hashlib.sha256(data).hexdigest()[:16], f.lstat().st_mtime,
+                            clean(why, 500)))
     return jobs
+
+
+def empty_students(root: str | Path, problem: str) -> list[str]:
+    """Student directories under ``root`` without any submission file."""
+    return [clean(d.name, 200) for d in _student_dirs(root) if choose_submission(d, problem)[0] is None]
+
+
+def _die_with_parent(parent: int) -> None:
+    """Pool worker initialiser: the kernel kills this worker when the grading process dies
+    (``PR_SET_PDEATHSIG``), so a ``kill -9`` of ``grade`` leaves no worker judging or idling."""
+    PR_SET_PDEATHSIG = 1
+    try:
+        ctypes.CDLL(None, use_errno=True).prctl(PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
+    except (OSError, AttributeError):
+        pass
+    if os.getppid() != parent:  # the parent died before the signal was armed
+        os._exit(1)
 
 
 _judges: dict[tuple, Judge] = {}
@@ -73,13 +135,13 @@ def grade_local(problem: str, job: Job, db_path: str, hide: tuple[str, ...], rep
         judge = _judge_for(problem, hide)
         result = judge.judge_path(job.path, on_test=lambda r: store.add_test(job.student, problem, job.sha, r),
                                   prior=prior)
-        store.finish(job.student, problem, job.sha, result)
+        store.finish(job.student, problem, job.sha, result, note=job.note)
         if report_dir:
             from .report import write_report
 
             write_report(result, Path(report_dir) / f"{job.student}.html", judge.problem, student=job.student)
         return {"student": job.student, "verdict": result.verdict, "score": result.score,
-                "max_score": result.max_score, "resumed": len(prior)}
+                "max_score": result.max_score, "resumed": len(prior), "tests": len(result.tests)}
     finally:
         store.close()
 
@@ -99,24 +161,53 @@ def grade_remote(problem: str, student: str, filename: str, data: bytes, prior: 
 
 
 class Progress:
-    """A progress bar on stderr (plain lines when stderr is not a terminal)."""
+    """Progress on stderr: students graded, tests done (and resumed from the store), who is being
+    judged. A live line on a terminal; otherwise a plain line per finished student."""
 
-    def __init__(self, total: int, stream=None):
+    def __init__(self, total: int, stream=None, tests_per_student: int = 0, resumed: int = 0):
         stream = stream if stream is not None else sys.stderr
         self.total, self.done, self.stream, self.t0 = total, 0, stream, time.monotonic()
         self.tty = hasattr(stream, "isatty") and stream.isatty()
+        self.tests_total = total * tests_per_student
+        self.tests_done, self.resumed, self.judging = resumed, resumed, ""
+
+    def _tests(self) -> str:
+        resumed = f", {self.resumed} resumed from the store" if self.resumed else ""
+        return f"tests {self.tests_done}/{self.tests_total}{resumed}" if self.tests_total else ""
+
+    def _line(self, label: str) -> None:
+        el = time.monotonic() - self.t0
+        width = 24
+        fill = int(width * self.done / max(1, self.total))
+        text = (f"[{'#' * fill}{'.' * (width - fill)}] {self.done}/{self.total} {el:5.1f}s {self._tests()} "
+                f"{label}")[:110]
+        self.stream.write(f"\r{text:110}")
+        self.stream.flush()
+
+    def poll(self, store: ResultStore, problem: str, jobs: dict[str, str], finished: set[str]) -> None:
+        """Refresh tests done and who is being judged from the store (``jobs``: student -> sha)."""
+        rows = store.db.execute("SELECT student, sha, COUNT(*) FROM results WHERE problem=? GROUP BY student, sha",
+                                (problem,)).fetchall()
+        counts = {st: n for st, sha, n in rows if jobs.get(st) == sha}
+        started = {st for st, sha in store.db.execute(
+            "SELECT student, sha FROM submissions WHERE problem=? AND status='running'", (problem,)) if jobs.get(st) == sha}
+        self.tests_done = sum(counts.values())
+        per = self.tests_total // max(1, self.total)
+        active = sorted(started - finished)
+        self.judging = "judging " + ", ".join(f"{st} {counts.get(st, 0)}/{per}" for st in active) if active else ""
+        if self.tty:
+            self._line(self.judging)
 
     def step(self, label: str) -> None:
         self.done += 1
         el = time.monotonic() - self.t0
         if self.tty:
-            width = 30
-            fill = int(width * self.done / max(1, self.total))
-            self.stream.write(f"\r[{'#' * fill}{'.' * (width - fill)}] {self.done}/{self.total} {el:5.1f}s {label[:40]:40}")
+            self._line(label)
             if self.done == self.total:
                 self.stream.write("\n")
         else:
-            self.stream.write(f"graded {self.done}/{self.total} ({el:.1f}s): {label}\n")
+            tests_text = f"; {self._tests()}" if self._tests() else ""
+            self.stream.write(f"graded {self.done}/{self.total} ({el:.1f}s): {label}{tests_text}\n")
         self.stream.flush()
 
 
@@ -124,36 +215,78 @@ def grade_class(problem: str, root: str | Path, db_path: str | Path, jobs: int =
                 csv_path: str | Path | None = None, report_dir: str | Path | None = None,
                 progress: bool = True) -> list[dict]:
     """Grade every student's submission for ``problem``; returns one summary dict per student."""
-    load_problem(problem)  # clear error for an unknown id
+    max_score = sum(load_problem(problem).group_points.values())  # also: a clear error for an unknown id
     todo_all = discover(root, problem)
+    empty = empty_students(root, problem)
     store = ResultStore(db_path)
     todo = [j for j in todo_all if not store.is_done(j.student, problem, j.sha)]
     summaries = [{"student": j.student, "skipped": "already graded"} for j in todo_all if j not in todo]
+    summaries += [{"student": st, "verdict": "", "score": 0, "max_score": max_score, "skipped": NO_SUBMISSION}
+                  for st in empty]
     hide = tuple(str(Path(p).resolve()) for p in (root, Path(db_path).parent, report_dir) if p)
-    bar = Progress(len(todo)) if progress else None
     # materialise tests once in the parent, before workers race for it
-    Judge(problem)
+    n_tests = len(Judge(problem).tests)
+    resumed = sum(len(store.prior(j.student, problem, j.sha)) for j in todo)
+    for j in todo_all:
+        if j.note:
+            print(f"{j.student}: {j.note}", file=sys.stderr)
+    for st in empty:
+        print(f"{st}: {NO_SUBMISSION}", file=sys.stderr)
+    if progress:
+        print(f"{problem}: {len(todo_all) + len(empty)} student folders: {len(todo)} to judge, "
+              f"{len(todo_all) - len(todo)} already graded, {len(empty)} without a submission; "
+              f"{resumed} test results resumed from the store", file=sys.stderr)
+    bar = Progress(len(todo), tests_per_student=n_tests, resumed=resumed) if progress else None
+    store.close()  # pool workers are forked: none may inherit an open SQLite connection
     if report_dir:
         Path(report_dir).mkdir(parents=True, exist_ok=True)
     if scheduler:
+        store = ResultStore(db_path)
         summaries += _grade_dask(problem, todo, store, scheduler, bar)
     else:
-        with ProcessPoolExecutor(max_workers=max(1, jobs)) as pool:
+        with ProcessPoolExecutor(max_workers=max(1, jobs), initializer=_die_with_parent,
+                                 initargs=(os.getpid(),)) as pool:
             futures = {pool.submit(grade_local, problem, j, str(db_path), hide, str(report_dir) if report_dir else None): j
                        for j in todo}
-            for fut in as_completed(futures):
-                j = futures[fut]
-                try:
-                    s = fut.result()
-                except Exception as exc:  # noqa: BLE001 - a judge fault; the batch goes on
-                    s = {"student": j.student, "verdict": "JE", "error": f"{type(exc).__name__}: {exc}"}
-                summaries.append(s)
-                if bar:
-                    bar.step(f"{s['student']} {s.get('verdict')} {s.get('score', '')}/{s.get('max_score', '')}")
+            store = ResultStore(db_path)  # opened after the workers were forked: progress reads it
+            shas, finished = {j.student: j.sha for j in todo}, set()
+            pending = set(futures)
+            while pending:
+                done, pending = wait(pending, timeout=1.0, return_when=FIRST_COMPLETED)
+                for fut in done:
+                    j = futures[fut]
+                    try:
+                        s = fut.result()
+                    except Exception as exc:  # noqa: BLE001 - a judge fault; the batch goes on
+                        s = {"student": j.student, "verdict": "JE", "error": f"{type(exc).__name__}: {exc}"}
+                    summaries.append(s)
+                    finished.add(j.student)
+                    if bar:
+                        bar.poll(store, problem, shas, finished)
+                        bar.step(f"{s['student']} {s.get('verdict')} {s.get('score', '')}/{s.get('max_score', '')}")
+                if bar and not done:
+                    bar.poll(store, problem, shas, finished)
     if csv_path:
         store.export_csv(problem, csv_path)
+        if empty:
+            _add_empty_rows(csv_path, problem, empty, max_score)
+    if report_dir:
+        from .report import write_index
+
+        write_index(Path(report_dir), problem, store, empty)
     store.close()
     return summaries
+
+
+def _add_empty_rows(csv_path: str | Path, problem: str, students: list[str], max_score: int) -> None:
+    """Add a score-0 row for every student folder without a submission, keeping the rows sorted."""
+    with open(csv_path, newline="") as f:
+        rows = list(csv.reader(f))
+    head, body = rows[0], rows[1:]
+    for st in students:
+        body.append([csv_cell(st), problem, "0", str(max_score), "", "", NO_SUBMISSION])
+    with open(csv_path, "w", newline="") as f:
+        csv.writer(f).writerows([head, *sorted(body, key=lambda r: r[0].lstrip("'"))])
 
 
 def _grade_dask(problem: str, todo: Iterable[Job], store: ResultStore, scheduler: str, bar: Progress | None) -> list[dict]:
@@ -165,7 +298,18 @@ def _grade_dask(problem: str, todo: Iterable[Job], store: ResultStore, scheduler
         for j in todo:
             store.begin(j.student, problem, j.path, j.sha, j.submitted_at)
             prior = [r.to_json() for r in store.prior(j.student, problem, j.sha).values()]
-            fut = client.submit(grade_remote, problem, j.student, Path(j.path).name, Path(j.path).read_bytes(), prior,
+            try:
+                data = read_submission_bytes(j.path)
+            except SubmissionError:  # judged here: no code runs, the result is CE with the reason
+                data = None
+            if data is None:
+                result = _judge_for(problem, ()).judge_path(j.path)
+                for t in result.tests:
+                    store.add_test(j.student, problem, j.sha, t)
+                store.finish(j.student, problem, j.sha, result)
+                out.append({"student": j.student, "verdict": result.verdict, "score": 0, "max_score": result.max_score})
+                continue
+            fut = client.submit(grade_remote, problem, j.student, Path(j.path).name, data, prior,
                                 key=f"grade-{problem}-{j.student}-{j.sha}", pure=False)
             futures[fut] = j
         for fut in dask_completed(list(futures)):
@@ -179,7 +323,7 @@ def _grade_dask(problem: str, todo: Iterable[Job], store: ResultStore, scheduler
             for t in tests:
                 store.add_test(j.student, problem, j.sha, t)
             result = JudgeResult(problem, j.path, tests, {g["name"]: g["points"] for g in data["groups"]})
-            store.finish(j.student, problem, j.sha, result)
+            store.finish(j.student, problem, j.sha, result, note=j.note)
             s = {"student": j.student, "verdict": result.verdict, "score": result.score, "max_score": result.max_score}
             out.append(s)
             if bar:

@@ -5,18 +5,27 @@
     python -m grader grade PROBLEM SUBMISSIONS_DIR [--db results.sqlite] [--jobs N] [--csv grades.csv]
                            [--reports DIR] [--scheduler tcp://host:8786]
     python -m grader timed start PROBLEM STUDENT [--db timed.sqlite]
+    python -m grader timed status PROBLEM STUDENT [--db timed.sqlite]
     python -m grader timed submit PROBLEM STUDENT FILE [--db timed.sqlite] [--json]
     python -m grader scoreboard [--db results.sqlite] [--start ISO|EPOCH] [--problems a,b] [--json]
-    python -m grader export-kattis PROBLEM OUTDIR [--groups g1,g2]
+    python -m grader export-kattis PROBLEM OUTDIR [--groups g1,g2] [--no-judge]
     python -m grader validate PROBLEM
+    python -m grader statements [--check] [PROBLEM...]
 
-Exit status: 0 on success (whatever the verdict), 2 for bad usage or input (a clear message).
+Exit status (for scripts and the CI of students' own repositories):
+    0  success; for ``judge`` and ``timed submit``: the verdict is AC
+    1  ``judge``/``timed submit``: any verdict but AC; ``validate``: the package has problems;
+       ``statements --check``: a statement is stale or lacks its generated block
+    2  bad usage or input: unknown problem, missing file or folder, a results store that does
+       not exist (commands that only read a store never create one), with a one-line message
+A closed output pipe (``python -m grader list | head -1``) ends the command quietly.
 """
 
 from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
 from pathlib import Path
 
@@ -28,13 +37,22 @@ from .store import ResultStore
 from .verdicts import format_table
 
 
+def _existing_store(path: str) -> ResultStore:
+    """Open a results store that must already exist (a mistyped ``--db`` is an error, not a new file)."""
+    if not Path(path).is_file():
+        raise ValueError(f"no results store at {path} (check --db; it is created by `grade` or `timed start`)")
+    return ResultStore(path)
+
+
 def _cmd_list(a: argparse.Namespace) -> int:
-    rows = [(p.id, p.entry, f"{p.time_limit:g}s", str(sum(g.points for g in p.groups)), p.title) for p in list_problems()]
+    rows = [(p.id, p.entry, f"{p.time_limit:g}s", f"{p.memory_mb}MB", str(sum(g.points for g in p.groups)), p.title)
+            for p in list_problems()]
     if a.json:
-        print(json.dumps([dict(zip(("id", "entry", "time_limit", "points", "title"), r)) for r in rows], indent=1))
+        keys = ("id", "entry", "time_limit", "memory", "points", "title")
+        print(json.dumps([dict(zip(keys, r)) for r in rows], indent=1))
         return 0
-    for r in [("id", "entry", "limit", "points", "title"), *rows]:
-        print(f"{r[0]:22} {r[1]:22} {r[2]:6} {r[3]:6} {r[4]}")
+    for r in [("id", "entry", "time", "memory", "points", "title"), *rows]:
+        print(f"{r[0]:22} {r[1]:22} {r[2]:6} {r[3]:7} {r[4]:6} {r[5]}")
     return 0
 
 
@@ -43,19 +61,24 @@ def _cmd_judge(a: argparse.Namespace) -> int:
     if not path.is_file():
         raise ValueError(f"submission file {path} does not exist")
     judge = Judge(a.problem, hide=[str(path.resolve().parent)])
-    result = judge.judge_path(path)
+    result = judge.judge_path(path, follow_links=True)  # the file named on the command line
     if a.report:
         from .report import write_report
 
         write_report(result, a.report, judge.problem)
     print(json.dumps(result.to_json(), indent=1) if a.json else format_table(result))
-    return 0
+    return 0 if result.verdict == "AC" else 1
 
 
 def _cmd_grade(a: argparse.Namespace) -> int:
     from .classgrade import grade_class
 
-    summaries = grade_class(a.problem, a.submissions, a.db, jobs=a.jobs, scheduler=a.scheduler, csv_path=a.csv,
+    if a.nbgrader:  # SUBMISSIONS is nbgrader's submitted/; results go into its gradebook
+        from .nbgrader_autograde import grade_course
+
+        summaries = grade_course(a.problem, a.submissions, jobs=a.jobs)
+    else:
+        summaries = grade_class(a.problem, a.submissions, a.db, jobs=a.jobs, scheduler=a.scheduler, csv_path=a.csv,
                             report_dir=a.reports, progress=not a.quiet)
     if a.json:
         print(json.dumps(summaries, indent=1))
@@ -66,12 +89,14 @@ def _cmd_grade(a: argparse.Namespace) -> int:
 
 
 def _cmd_timed(a: argparse.Namespace) -> int:
-    store = ResultStore(a.db)
+    if a.action == "start":
+        timed._settings(a.problem)  # refuse a problem without timed settings before creating a store
+    store = ResultStore(a.db) if a.action == "start" else _existing_store(a.db)
+    code = 0
     try:
-        if a.action == "start":
-            info = timed.start(a.problem, a.student, store)
-            print(json.dumps(info) if a.json else
-                  f"{a.student}: {a.problem} started; {info['duration_min']} minutes, deadline at epoch {info['deadline']:.0f}")
+        if a.action in ("start", "status"):
+            info = (timed.start if a.action == "start" else timed.status)(a.problem, a.student, store)
+            print(json.dumps(info) if a.json else timed.describe(info))
         else:
             if not a.file or not Path(a.file).is_file():
                 raise ValueError("timed submit needs an existing FILE")
@@ -81,14 +106,15 @@ def _cmd_timed(a: argparse.Namespace) -> int:
                                   "multiplier": out.multiplier, "final_score": out.final_score, "note": out.note}, indent=1))
             else:
                 print(format_table(out.result))
-                print(f"elapsed {out.elapsed_s / 60:.1f} min; {out.note}; final score {out.final_score:g}/{out.result.max_score}")
+                print(f"{out.note}; final score {out.final_score:g}/{out.result.max_score}")
+            code = 0 if out.result.verdict == "AC" else 1
     finally:
         store.close()
-    return 0
+    return code
 
 
 def _cmd_scoreboard(a: argparse.Namespace) -> int:
-    store = ResultStore(a.db)
+    store = _existing_store(a.db)
     rows = sb.compute(store, sb.parse_start(a.start), a.problems.split(",") if a.problems else None)
     store.close()
     print(json.dumps(rows, indent=1) if a.json else sb.format_board(rows))
@@ -98,18 +124,31 @@ def _cmd_scoreboard(a: argparse.Namespace) -> int:
 def _cmd_export(a: argparse.Namespace) -> int:
     from .kattis import export
 
-    dest = export(a.problem, a.outdir, groups=a.groups.split(",") if a.groups else None)
+    dest = export(a.problem, a.outdir, groups=a.groups.split(",") if a.groups else None, judge=not a.no_judge)
     print(dest)
     return 0
 
 
 def _cmd_validate(a: argparse.Namespace) -> int:
     p = load_problem(a.problem)
-    errors = p.validate() + p.validate_inputs()
+    errors = p.validate()
+    errors += (p.validate_checker() + p.validate_inputs()) if not errors else []
     for e in errors:
         print(f"{p.id}: {e}")
     print(f"{p.id}: {len(p.tests())} tests, {'OK' if not errors else f'{len(errors)} problems'}")
     return 1 if errors else 0
+
+
+def _cmd_statements(a: argparse.Namespace) -> int:
+    from .statements import update_statements
+
+    stale = update_statements(a.problems or None, check=a.check)
+    for pid, why in stale:
+        print(f"{pid}: {why}", file=sys.stderr if a.check else sys.stdout)
+    if a.check and stale:
+        print("run `python -m grader statements` to regenerate", file=sys.stderr)
+        return 1
+    return 1 if any(not why.startswith("rewrote") for _, why in stale) else 0
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -134,9 +173,11 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--scheduler", help="Dask distributed scheduler address")
     p.add_argument("--json", action="store_true")
     p.add_argument("--quiet", action="store_true", help="no progress bar")
+    p.add_argument("--nbgrader", action="store_true",
+                   help="SUBMISSIONS is an nbgrader course's submitted/ dir: judge in parallel, then nbgrader autograde")
     p.set_defaults(func=_cmd_grade)
-    p = sub.add_parser("timed", help="timed attempts: start / submit")
-    p.add_argument("action", choices=["start", "submit"])
+    p = sub.add_parser("timed", help="timed attempts: start / status / submit")
+    p.add_argument("action", choices=["start", "status", "submit"])
     p.add_argument("problem")
     p.add_argument("student")
     p.add_argument("file", nargs="?")
@@ -152,20 +193,34 @@ def build_parser() -> argparse.ArgumentParser:
     p = sub.add_parser("export-kattis", help="write a Kattis problem package")
     p.add_argument("problem")
     p.add_argument("outdir")
-    p.add_argument("--groups", help="only these hidden groups (comma-separated)")
+    p.add_argument("--groups", help="only these hidden groups (comma-separated; 'large:1' keeps the first test of large)")
+    p.add_argument("--no-judge", action="store_true",
+                   help="place the reference solutions by their expected verdict, without judging them")
     p.set_defaults(func=_cmd_export)
     p = sub.add_parser("validate", help="check a problem package and its test inputs")
     p.add_argument("problem")
     p.set_defaults(func=_cmd_validate)
+    p = sub.add_parser("statements", help="write the limits-and-scoring block of each statement")
+    p.add_argument("problems", nargs="*", help="problem ids (default: every problem)")
+    p.add_argument("--check", action="store_true", help="only report stale statements (exit 1 if any)")
+    p.set_defaults(func=_cmd_statements)
     return ap
 
 
 def main(argv: list[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
     try:
-        return args.func(args)
+        code = args.func(args)
+        sys.stdout.flush()  # a closed pipe shows up here, inside the handler
+        return code
+    except BrokenPipeError:  # `... | head`: the reader has gone; say nothing more
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 0
     except ValueError as exc:
         print(f"error: {exc}", file=sys.stderr)
+        return 2
+    except OSError as exc:  # a missing or unreadable path the checks above did not name
+        print(f"error: {exc.strerror or exc}: {exc.filename or ''}".rstrip(": "), file=sys.stderr)
         return 2
 
 

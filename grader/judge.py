@@ -21,12 +21,14 @@ from pathlib import Path
 from typing import Callable, Sequence
 
 from .problems import Problem, TestCase, load_problem
-from .runner import FunctionWorker, RunOutcome, run_stdio
+from .runner import FunctionWorker, RunOutcome, idle_budget_for, run_stdio
 from .sandbox import Limits, Sandbox
 from .submissions import Submission, SubmissionError
+from .text import clean
 from .verdicts import JudgeResult, TestResult, Verdict
 
 PREVIEW_MAX_LINES = 24
+PRINTED_MAX_BYTES = 2000  #: function mode: a failing test's print() output shown up to this many bytes
 _CE_TYPES = {"SyntaxError", "IndentationError", "TabError", "ImportError", "ModuleNotFoundError", "MissingEntry"}
 _cover_cache: dict[tuple[str, ...], list[str]] = {}
 
@@ -59,6 +61,30 @@ def preview(test: TestCase) -> str:
     """The test's input for the student when it is small enough to read."""
     lines = test.input_text.splitlines()
     return test.input_text if len(lines) <= PREVIEW_MAX_LINES else ""
+
+
+def _file_size(path: str) -> int:
+    try:
+        return os.path.getsize(path)
+    except OSError:
+        return 0
+
+
+def _printed_since(path: str, offset: int) -> tuple[str, int]:
+    """What the function-mode worker printed to stdout after ``offset`` (capped), and the new size."""
+    size = _file_size(path)
+    if size < offset:  # the worker was restarted: its stdout file starts over
+        offset = 0
+    if size == offset:
+        return "", size
+    with open(path, "rb") as f:
+        f.seek(offset)
+        data = f.read(PRINTED_MAX_BYTES + 1)
+    text = data[:PRINTED_MAX_BYTES].decode("utf-8", "replace")
+    text = "".join(c if c.isprintable() or c in "\n\t" else "?" for c in text)
+    if len(data) > PRINTED_MAX_BYTES:
+        text += f"\n... ({size - offset - PRINTED_MAX_BYTES} more bytes not shown)"
+    return text, size
 
 
 def _verdict_for(outcome: RunOutcome) -> tuple[Verdict, str]:
@@ -100,13 +126,15 @@ class Judge:
         if self._args[k] is None:
             chk, t = self.problem.checker, self.tests[k]
             self._args[k] = chk.read_input(t.input_text)
-            self._answers[k] = chk.read_answer(t.answer_text) if t.answer_text else None
+            self._answers[k] = self.problem.read_answer(t, self._args[k])
         return self._args[k], self._answers[k]
 
     def judge_path(self, path: str | Path, on_test: Callable[[TestResult], None] | None = None,
-                   prior: dict[str, TestResult] | None = None) -> JudgeResult:
+                   prior: dict[str, TestResult] | None = None, follow_links: bool = False) -> JudgeResult:
+        """Judge the file at ``path``; a symbolic link is CE unless ``follow_links`` (a file the
+        caller named itself, not one found in a class folder)."""
         try:
-            sub = Submission.from_path(path)
+            sub = Submission.from_path(path, follow_links=follow_links)
         except SubmissionError as exc:
             return self._all(str(path), Verdict.CE, str(exc), "none", on_test)
         return self.judge(sub, str(path), on_test, prior)
@@ -114,6 +142,7 @@ class Judge:
     def _all(self, name: str, verdict: Verdict, message: str, mode: str,
              on_test: Callable[[TestResult], None] | None = None) -> JudgeResult:
         tests = []
+        message = clean(message, 4000, newlines=True)
         for t in self.tests:
             r = TestResult(t.name, t.group, verdict, 0.0, 0.0, message)
             tests.append(r)
@@ -137,6 +166,7 @@ class Judge:
         results: list[TestResult] = []
         failed_groups: set[str] = set()
         load_failure: tuple[Verdict, str] | None = None
+        idle_left = idle_budget_for(self.problem.time_limit)
         with Sandbox(self.limits, hide=self.hide, cover=self.cover) as box:
             worker = None
             if mode == "function":
@@ -156,7 +186,8 @@ class Judge:
                     elif test.group in failed_groups or (failed_groups and self.stop_at_first_failure):
                         r = TestResult(test.name, test.group, Verdict.SKIPPED, message="an earlier test of this group failed")
                     else:
-                        r = self._run_one(box, worker, sub, k)
+                        r, idle = self._run_one(box, worker, sub, k, idle_left)
+                        idle_left -= idle
                         if worker is not None and worker.load_failure is not None and r.verdict in (Verdict.CE, Verdict.SV):
                             load_failure = (r.verdict, r.message)
                     if r.verdict not in (Verdict.AC, Verdict.SKIPPED):
@@ -171,16 +202,22 @@ class Judge:
         result.judge_time_s = time.monotonic() - t0
         return result
 
-    def _run_one(self, box: Sandbox, worker: FunctionWorker | None, sub: Submission, k: int) -> TestResult:
+    def _run_one(self, box: Sandbox, worker: FunctionWorker | None, sub: Submission, k: int,
+                 idle_left: float) -> tuple[TestResult, float]:
+        """One test's result and the wall time the submission spent not computing in it."""
         test = self.tests[k]
         chk = self.problem.checker
+        idle = 0.0
+        before = 0
         try:
             args, expected = self._test_data(k)
             if worker is not None:
-                outcome = worker.call(args, self.problem.time_limit)
+                before = _file_size(worker.out_paths[0])
+                outcome = worker.call(args, self.problem.time_limit, idle_left=idle_left)
             else:
                 outcome = run_stdio(box, sub.source, test.input_text, self.problem.time_limit,
-                                    self.problem.forbidden, filename=sub.filename)
+                                    self.problem.forbidden, filename=sub.filename, idle_left=idle_left)
+            idle = outcome.idle_s
             r = TestResult(test.name, test.group, Verdict.JE, outcome.time_s, round(outcome.memory_mb, 1))
             if outcome.status == "ok":
                 try:
@@ -190,6 +227,8 @@ class Judge:
                         answer = chk.read_output(outcome.value, args)
                 except chk.PresentationError as exc:
                     r.verdict, r.message = Verdict.PE, str(exc)
+                except getattr(chk, "WrongAnswer", ()) as exc:  # optional: wrong before any real check
+                    r.verdict, r.message = Verdict.WA, str(exc)
                 else:
                     ok, message = chk.check(args, answer, expected)
                     r.verdict, r.message = (Verdict.AC, "") if ok else (Verdict.WA, message)
@@ -202,7 +241,12 @@ class Judge:
                            f"judge error: {type(exc).__name__}: {exc}\n{traceback.format_exc(limit=3)}")
         if r.verdict not in (Verdict.AC, Verdict.SKIPPED):
             r.input_preview = preview(test)
-        return r
+            if worker is not None and r.verdict != Verdict.JE:
+                printed, _ = _printed_since(worker.out_paths[0], before)
+                if printed.strip():
+                    r.message += f"\n--- your print() output in this test ---\n{printed}"
+        r.message = clean(r.message, 4000, newlines=True)  # checker messages quote student data
+        return r, idle
 
 
 def judge_file(problem: str | Problem, path: str | Path, hide: Sequence[str] = ()) -> JudgeResult:
@@ -212,4 +256,4 @@ def judge_file(problem: str | Problem, path: str | Path, hide: Sequence[str] = (
     100
     """
     path = Path(path)
-    return Judge(problem, hide=[*hide, str(path.resolve().parent)]).judge_path(path)
+    return Judge(problem, hide=[*hide, str(path.resolve().parent)]).judge_path(path, follow_links=True)

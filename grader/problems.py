@@ -30,6 +30,9 @@ from typing import Any
 
 import yaml
 
+from . import checker_runtime
+from .checker_runtime import load_checker, read_answer
+
 REPO = Path(__file__).resolve().parent.parent
 ALWAYS_FORBIDDEN = ("reference_impl", "grader")
 
@@ -127,8 +130,8 @@ class Problem:
             errors.append("statement/problem.en.md is missing")
         if not self.checker_path.is_file():
             errors.append(f"checker {self.checker_path} is missing")
-        if not list((self.path / "input_validators").glob("*")):
-            errors.append("input_validators/ is empty")
+        if not (self.path / "input_validators").is_dir() or not self.input_validators():
+            errors.append("input_validators/ holds no validator program (<name>.py, or <dir>/main.py)")
         names = [g.name for g in self.groups]
         if len(set(names)) != len(names):
             errors.append("group names repeat")
@@ -139,15 +142,38 @@ class Problem:
                 errors.append(f"group {g.name}: generated cases but no generator")
             if not g.cases and not g.data:
                 errors.append(f"group {g.name}: no tests")
-        for attr in ("read_input", "from_result", "read_output", "check", "PresentationError"):
-            if self.checker_path.is_file() and not hasattr(self.checker, attr):
-                errors.append(f"checker lacks {attr}")
+        if sum(g.points for g in self.groups) != 100:
+            errors.append(f"group points sum to {sum(g.points for g in self.groups)}, not 100")
+        if self.generator_path is not None and self.generator_path.is_file():
+            if not callable(getattr(self.generator, "solve", None)):
+                errors.append("generator lacks solve()")
+            if not any(callable(getattr(self.generator, a, None)) for a in ("generate", "generate_args")):
+                errors.append("generator lacks generate() (or generate_args())")
         return errors
+
+    def validate_checker(self) -> list[str]:
+        """The checker protocol on every test (see :mod:`grader.checker_protocol`)."""
+        from .checker_protocol import validate_checker
+
+        return validate_checker(self)
+
+    def input_validators(self) -> list[Path]:
+        """The validator programs: each ``input_validators/<name>.py``, and for each directory (one
+        program, as Kattis sees it) its ``main.py``, else its ``<name>.py``."""
+        out = []
+        for entry in sorted((self.path / "input_validators").iterdir()):
+            if entry.is_dir():
+                main = next((f for f in (entry / "main.py", entry / f"{entry.name}.py") if f.is_file()), None)
+                if main is not None:
+                    out.append(main)
+            elif entry.suffix == ".py":
+                out.append(entry)
+        return out
 
     def validate_inputs(self) -> list[str]:
         """Run the package's input validators on every test input (Kattis: exit 42 = valid)."""
         errors = []
-        validators = sorted(p for p in (self.path / "input_validators").rglob("*.py"))
+        validators = self.input_validators()
         for t in self.tests():
             for v in validators:
                 r = subprocess.run([sys.executable, str(v)], input=t.input_text, text=True, capture_output=True)
@@ -158,7 +184,11 @@ class Problem:
     # -- modules --------------------------------------------------------------------------
     @cached_property
     def checker(self) -> ModuleType:
-        return _load_module(self.checker_path, f"_checker_{self.id.replace('-', '_')}")
+        return load_checker(self.checker_path, f"_checker_{self.id.replace('-', '_')}")
+
+    def read_answer(self, test: TestCase, args: list) -> Any:
+        """The reference answer of ``test`` in the checker's form (``None`` when there is none)."""
+        return read_answer(self.checker, test.answer_text, args) if test.answer_text else None
 
     @cached_property
     def generator(self) -> ModuleType:
@@ -171,11 +201,29 @@ class Problem:
         return {g.name: g.points for g in self.groups}
 
     # -- tests ----------------------------------------------------------------------------
+    def _code_files(self) -> list[Path]:
+        """Files the tests depend on beyond the package: the checker and generator (which may sit
+        behind symlinked directories), the checker's LIBRARY modules, and the point-case modules
+        of other packages that the generator loads."""
+        files = [f for f in (self.checker_path, self.generator_path) if f is not None and f.is_file()]
+        if self.checker_path.is_file():
+            files += [checker_runtime.LIBRARY_DIR / f"{n}.py"
+                      for n in checker_runtime.library_names(self.checker_path.read_text())]
+        if self.generator_path is not None and self.generator_path.is_file():
+            root, seen, todo = str(problems_root()), set(), [self.generator]
+            while todo:  # modules loaded by path from other packages, transitively
+                for m in vars(todo.pop()).values():
+                    f = getattr(m, "__file__", None) if isinstance(m, ModuleType) else None
+                    if f and str(f).startswith(root) and f not in seen:
+                        seen.add(f)
+                        todo.append(m)
+            files += sorted(Path(f) for f in seen)
+        return files
+
     def digest(self) -> str:
         h = hashlib.sha256()
-        for f in (self.checker_path, self.generator_path):  # may sit behind symlinked directories
-            if f is not None and f.is_file():
-                h.update(f.read_bytes())
+        for f in self._code_files():
+            h.update(f.read_bytes())
         for f in sorted(p for p in self.path.rglob("*") if p.is_file() and "__pycache__" not in p.parts):
             h.update(str(f.relative_to(self.path)).encode())
             h.update(f.read_bytes())
@@ -215,7 +263,7 @@ class Problem:
             for g in self.groups:
                 (tmp / g.name).mkdir()
                 for k, case in enumerate(g.cases):
-                    args = [self.generator.generate(case, self.seed + 1000 * k + sum(map(ord, g.name)))]
+                    args = self.generate_args(case, self.seed + 1000 * k + sum(map(ord, g.name)))
                     stem = tmp / g.name / f"{k + 1:02d}"
                     stem.with_suffix(".in").write_text(self.checker.write_input(args))
                     stem.with_suffix(".ans").write_text(self.checker.write_output(self.generator.solve(*args)))
@@ -227,6 +275,13 @@ class Problem:
             shutil.rmtree(tmp, ignore_errors=True)
             raise
         return target
+
+    def generate_args(self, case: dict, seed: int) -> list[Any]:
+        """The entry function's argument list for one generated case: the generator's
+        ``generate_args(case, seed)`` when it has one (problems with several arguments), else
+        ``[generate(case, seed)]``."""
+        gen = self.generator
+        return list(gen.generate_args(case, seed)) if hasattr(gen, "generate_args") else [gen.generate(case, seed)]
 
     def parse_args(self, test: TestCase) -> list[Any]:
         return self.checker.read_input(test.input_text)

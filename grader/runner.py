@@ -24,18 +24,51 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Sequence
 
+from .engines import ENGINE_API, IMPORTED_BY_LIBRARIES, engine_libraries, engine_modules
 from .sandbox import Sandbox, python_roots
+from .text import clean
 
 #: The child's program, passed with ``-c`` (the grader's directory is not visible in the jail).
 BOOTSTRAP_SOURCE = Path(__file__).with_name("child_bootstrap.py").read_text()
 CLK_TCK = os.sysconf("SC_CLK_TCK")
-MAX_REPLY_BYTES = 64 << 20
+
+
+#: At most this many control lines per run beyond the protocol's own (load reply, one reply per call).
+MAX_CONTROL_LINES = 4
+_REPLY_KEYS = ("ok", "error", "bad_type")
 
 
 def wall_limit_for(time_limit: float) -> float:
-    """Wall-clock cap of one test: TLE is decided on CPU time; this catches sleeping and gives
-    slack on a loaded machine."""
-    return 3 * time_limit + 1.0
+    """Backstop wall-clock cap of one test, reached only on a machine so loaded that the submission
+    hardly gets a CPU (a 2-core machine at load 9 gives it about a fifth of one). A submission
+    that sleeps is stopped much earlier (:func:`sleep_limit_for`); TLE is decided on CPU time.
+
+    >>> wall_limit_for(2.0)
+    30.0
+    """
+    return 10 * time_limit + 10.0
+
+
+def sleep_limit_for(time_limit: float) -> float:
+    """Wall time a test may spend *idle*: neither running nor waiting for a busy CPU (sleeping,
+    blocked on a lock or a pipe). Time spent waiting in the run queue of a loaded machine does not
+    count (it is read from ``/proc/<pid>/schedstat``), so this is slack, not a sleeping allowance.
+
+    >>> sleep_limit_for(2.0)
+    2.0
+    """
+    return 0.5 * time_limit + 1.0
+
+
+def idle_budget_for(time_limit: float) -> float:
+    """Idle wall time (see :func:`sleep_limit_for`) a whole submission may spend, summed over its
+    tests: once spent, the remaining tests are TLE at once, so a sleeper holds a judge for at most
+    this long.
+
+    >>> idle_budget_for(6.0)
+    30.0
+    """
+    return 2 * time_limit + 18.0
 
 
 @dataclass
@@ -49,9 +82,17 @@ class RunOutcome:
     time_s: float = 0.0
     memory_mb: float = 0.0
     where: tuple[str, ...] = ()
+    idle_s: float = 0.0  #: wall time not spent computing (sleeping, blocked, waiting for a CPU)
 
 
-def _cpu_seconds(pid: int) -> float:
+def _cpu_seconds(box: Sandbox, pid: int) -> float:
+    """CPU seconds used so far by the whole sandbox (its cgroup: forked helpers included), or
+    by process ``pid`` when the sandbox has no group (not root)."""
+    if box.group is not None:
+        try:
+            return box.group.cpu_seconds()
+        except (OSError, ValueError):
+            return 0.0
     try:
         with open(f"/proc/{pid}/stat", "rb") as f:
             fields = f.read().rsplit(b")", 1)[1].split()
@@ -63,7 +104,29 @@ def _cpu_seconds(pid: int) -> float:
         return 0.0
 
 
-def _peak_rss_mb(pid: int) -> float:
+def _runqueue_seconds(box: Sandbox, pid: int) -> float:
+    """Time spent runnable but waiting for a CPU (``schedstat`` field 2): summed over the
+    sandbox's processes when it has a group (the jail's own pid 1 and the student's helpers),
+    else of process ``pid``."""
+    pids = box.group.pids() if box.group is not None else [pid]
+    total = 0.0
+    for p in pids or [pid]:
+        try:
+            with open(f"/proc/{p}/schedstat", "rb") as f:
+                total += int(f.read().split()[1]) / 1e9
+        except (OSError, IndexError, ValueError):
+            pass
+    return total
+
+
+def _peak_rss_mb(box: Sandbox, pid: int) -> float:
+    """Peak memory since the last :func:`_reset_peak`: of the whole sandbox (cgroup) when it has
+    a group, else the peak RSS of process ``pid``."""
+    if box.group is not None:
+        try:
+            return box.group.peak_memory_mb()
+        except (OSError, ValueError):
+            return 0.0
     try:
         with open(f"/proc/{pid}/status", "rb") as f:
             for line in f:
@@ -74,12 +137,27 @@ def _peak_rss_mb(pid: int) -> float:
     return 0.0
 
 
-def _reset_peak(pid: int) -> None:
+def _reset_peak(box: Sandbox, pid: int) -> None:
+    if box.group is not None:
+        try:
+            box.group.reset_peak()
+        except (OSError, ValueError):
+            pass
+        return
     try:
         with open(f"/proc/{pid}/clear_refs", "w") as f:
             f.write("5")
     except OSError:
         pass
+
+
+def _memory_limit_hit(box: Sandbox) -> bool:
+    """Did the kernel kill a process of the sandbox for memory (its cgroup's OOM killer) since
+    the last :func:`_reset_peak`? (A forked helper can die that way while the worker answers.)"""
+    try:
+        return box.group is not None and box.group.memory_limit_hit()
+    except (OSError, ValueError):
+        return False
 
 
 def _describe_signal(sig: int) -> str:
@@ -93,7 +171,14 @@ def _describe_signal(sig: int) -> str:
 
 
 class _Child:
-    """A started child with its control pipes; reads replies with a deadline."""
+    """A started child with its control pipes; reads replies with a deadline.
+
+    The control channel is bounded: a line must be one of the protocol's messages (for a call,
+    exactly one reply carrying the id that was asked for), at most the problem's output limit in
+    bytes, and at most :data:`MAX_CONTROL_LINES` lines beyond the protocol's own. The first line
+    that is not (no id, a wrong or repeated id, not JSON, unknown keys) ends the reading: it is
+    recorded as ``{"garbled": ...}`` and everything after it is discarded unread.
+    """
 
     def __init__(self, box: Sandbox, config: dict, source: str, stdin: int, stdout: int, stderr: int,
                  cpu_s: float):
@@ -111,7 +196,11 @@ class _Child:
         self.pidfd = os.pidfd_open(self.pid)
         os.set_blocking(self.ctl_in, False)
         os.set_blocking(self.ctl_out, False)
-        self.buf = b""
+        self.buf = bytearray()
+        self.max_bytes = (box.limits.output_mb << 20) + (1 << 16)  # the answer plus its JSON envelope
+        self.line_budget = MAX_CONTROL_LINES + 1  # the load reply, then one per request sent
+        self.want_id: int | None = None
+        self.junk = False
         self.replies: list[dict] = []
         self.exit_status: int | None = None
         self.rusage = None
@@ -119,15 +208,18 @@ class _Child:
         self.violation: str | None = None
 
     def send(self, obj: dict) -> None:
+        if "id" in obj:
+            self.want_id = obj["id"]
+            self.line_budget += 1
         self.pending += (json.dumps(obj, allow_nan=True, separators=(",", ":")) + "\n").encode()
 
     def wait_reply(self, deadline: float, want: str | None = None) -> dict | None:
         """Pump I/O until a reply (with key ``want`` or any key if None) arrives, the child ends,
-        or the deadline passes. Returns the reply or None."""
+        or the deadline passes (checked on every read). Returns the reply or None."""
         while True:
             for i, r in enumerate(self.replies):
                 if "violation" in r:
-                    self.violation = self.violation or str(r["violation"])[:500]
+                    self.violation = self.violation or r["violation"]
                     return r
                 if want is None or want in r or "garbled" in r or "output_limit" in r:
                     return self.replies.pop(i)
@@ -169,19 +261,51 @@ class _Child:
             os.close(self.ctl_out)
             self.ctl_out = -1
             return
+        if self.junk:
+            return  # after a protocol violation everything is discarded unread
         self.buf += chunk
-        if len(self.buf) > MAX_REPLY_BYTES:
-            self.buf = b""
+        start = 0
+        while not self.junk:
+            nl = self.buf.find(b"\n", start)
+            if nl < 0:
+                break
+            self._accept(bytes(self.buf[start:nl]))
+            start = nl + 1
+        del self.buf[:start]
+        if self.junk:
+            self.buf.clear()
+        elif len(self.buf) > self.max_bytes:
+            self.buf.clear()
+            self.junk = True
+            self.replies.append({"output_limit": True})
+
+    def _accept(self, line: bytes) -> None:
+        """Keep ``line`` if it is a protocol message we expect now, else mark the channel as junk."""
+        self.line_budget -= 1
+        if len(line) > self.max_bytes:
+            self.junk = True
             self.replies.append({"output_limit": True})
             return
-        while b"\n" in self.buf:
-            line, self.buf = self.buf.split(b"\n", 1)
-            try:
-                obj = json.loads(line)
-            except (ValueError, RecursionError):
-                obj = {"garbled": line[:200].decode(errors="replace")}
-            if not isinstance(obj, dict):
-                obj = {"garbled": str(obj)[:200]}
+        try:
+            obj = json.loads(line) if self.line_budget >= 0 else None
+        except (ValueError, RecursionError):
+            obj = None
+        if not isinstance(obj, dict):
+            obj = None
+        elif len(obj) == 1 and "violation" in obj:
+            obj = {"violation": clean(obj["violation"], 500)}
+        elif len(obj) == 1 and next(iter(obj)) in ("loaded", "load_error", "exit"):
+            pass
+        elif (len(obj) == 2 and type(obj.get("id")) is int and obj["id"] == self.want_id
+              and any(k in obj for k in _REPLY_KEYS)):
+            self.want_id = None  # a second reply with the same id is junk
+        else:
+            obj = None
+        if obj is None:
+            self.junk = True
+            what = "too many lines" if self.line_budget < 0 else clean(line[:200], 200)
+            self.replies.append({"garbled": what})
+        else:
             self.replies.append(obj)
 
     def _reap(self) -> None:
@@ -193,18 +317,15 @@ class _Child:
             else:
                 if _ == 0:
                     return
-            self.exit_status = os.waitstatus_to_exitcode(status)
+            self.exit_status = self.box.decode_exit(os.waitstatus_to_exitcode(status))
             self.proc.returncode = self.exit_status
 
     def kill(self) -> None:
         """Kill the process group, reap the child, then sweep every process of the sandbox uid."""
         if self.exit_status is None:
-            try:
-                os.killpg(self.pid, signal.SIGKILL)
-            except OSError:
-                pass
+            self.box.terminate(self.pid)
             _, status, self.rusage = os.wait4(self.pid, 0)
-            self.exit_status = os.waitstatus_to_exitcode(status)
+            self.exit_status = self.box.decode_exit(os.waitstatus_to_exitcode(status))
             self.proc.returncode = self.exit_status
         self.box.kill_all()
         self.close()
@@ -231,7 +352,9 @@ def _child_config(box: Sandbox, mode: str, entry: str, forbidden: Sequence[str],
     read_roots = python_roots() + [work, "/dev/null", "/dev/urandom", "/dev/zero", "/proc/self",
                                    "/usr/share/zoneinfo", "/etc/localtime"]
     return {"mode": mode, "entry": entry, "forbidden": list(forbidden), "filename": filename,
-            "read_roots": read_roots, "write_roots": [work]}
+            "read_roots": read_roots, "write_roots": [work], "engines": engine_modules(forbidden),
+            "engine_api": ENGINE_API, "engine_libs": engine_libraries(forbidden),
+            "library_imports": list(IMPORTED_BY_LIBRARIES)}
 
 
 def _classify_death(child: _Child, memory_mb: float, limit_mb: int) -> RunOutcome:
@@ -251,10 +374,13 @@ def _output_overflow(box: Sandbox, paths: Sequence[str]) -> bool:
     return any(os.path.exists(p) and os.path.getsize(p) >= limit for p in paths)
 
 
-def _error_outcome(err: dict, time_s: float = 0.0, memory_mb: float = 0.0) -> RunOutcome:
-    kind = str(err.get("type", "Error"))
-    msg = str(err.get("message", kind))[:2000]
-    where = tuple(str(w) for w in err.get("where", []) if isinstance(w, str))[:4]
+def _error_outcome(err: object, time_s: float = 0.0, memory_mb: float = 0.0) -> RunOutcome:
+    """An error report from the child (any JSON: it may be forged) as a sanitised outcome."""
+    err = err if isinstance(err, dict) else {}
+    kind = clean(err.get("type", "Error"), 100)
+    msg = clean(err.get("message", kind))
+    frames = err.get("where")
+    where = tuple(clean(w, 300) for w in frames[:4] if isinstance(w, str)) if isinstance(frames, list) else ()
     status = "memory" if kind == "MemoryError" else "error"
     return RunOutcome(status, message=msg, time_s=time_s, memory_mb=memory_mb, where=where)
 
@@ -294,10 +420,11 @@ class FunctionWorker:
             self.child.drain_after_exit()
             reply = next((r for r in self.child.replies if "load_error" in r or "violation" in r), None)
         if outcome is None and reply is not None and "violation" in reply:
-            outcome = RunOutcome("violation", message=str(reply["violation"])[:500])
+            outcome = RunOutcome("violation", message=reply["violation"])
+        elif outcome is None and reply is not None and ("garbled" in reply or "output_limit" in reply):
+            outcome = RunOutcome("bad_type", message="while loading, the submission wrote on the judge's channel")
         elif outcome is None and reply is not None and "load_error" in reply:
-            err = reply["load_error"] if isinstance(reply["load_error"], dict) else {}
-            outcome = _error_outcome(err)
+            outcome = _error_outcome(reply["load_error"])
             outcome.status = "memory" if outcome.status == "memory" else "load_error"
         elif outcome is None and reply is None:
             outcome = _classify_death(self.child, 0.0, self.box.limits.memory_mb)
@@ -314,8 +441,12 @@ class FunctionWorker:
             self.child.kill()
             self.child = None
 
-    def call(self, args: list, time_limit: float) -> RunOutcome:
-        """Run the entry function on ``args`` (JSON-native) under ``time_limit`` CPU seconds."""
+    def call(self, args: list, time_limit: float, idle_left: float = float("inf")) -> RunOutcome:
+        """Run the entry function on ``args`` (JSON-native) under ``time_limit`` CPU seconds,
+        stopping early once it has spent ``idle_left`` seconds of wall time not computing."""
+        if idle_left <= 0:
+            return RunOutcome("timeout", message="the submission's wall-time budget is used up (it spent it "
+                                                 "sleeping or blocked)", time_s=time_limit)
         if self.child is None or self.child.exit_status is not None:
             failure = self.start()
             if failure is not None:
@@ -324,32 +455,49 @@ class FunctionWorker:
         assert child is not None
         self._next_id += 1
         rid = self._next_id
-        _reset_peak(child.pid)
-        cpu0 = _cpu_seconds(child.pid)
+        _reset_peak(self.box, child.pid)
+        cpu0 = _cpu_seconds(self.box, child.pid)
+        rq0 = _runqueue_seconds(self.box, child.pid)
         wall0 = time.monotonic()
         child.send({"id": rid, "args": args})
         wall_limit = wall_limit_for(time_limit)
         deadline = wall0 + wall_limit
-        cpu_exceeded = False
+        cpu_exceeded = idle_exceeded = False
         while True:
             reply = child.wait_reply(min(time.monotonic() + 0.2, deadline), want="id")
-            if reply is not None:
-                if "violation" in reply or "output_limit" in reply or "garbled" in reply or reply.get("id") == rid:
-                    break
-                continue  # a stale or forged reply (wrong id) is ignored
+            if reply is not None:  # the reply to this call, a violation, or junk (see _Child)
+                break
             if child.exit_status is not None or time.monotonic() >= deadline:
                 break
-            if _cpu_seconds(child.pid) - cpu0 > time_limit + 0.05:
+            used = _cpu_seconds(self.box, child.pid) - cpu0
+            if used > time_limit + 0.05:
                 cpu_exceeded = True
                 break
+            idle = time.monotonic() - wall0 - used - (_runqueue_seconds(self.box, child.pid) - rq0)
+            if idle > min(idle_left, sleep_limit_for(time_limit)):
+                idle_exceeded = True
+                break
         wall = time.monotonic() - wall0
-        cpu = _cpu_seconds(child.pid) - cpu0 if child.exit_status is None else wall
-        mem = _peak_rss_mb(child.pid)
+        alive = child.exit_status is None
+        cpu = _cpu_seconds(self.box, child.pid) - cpu0 if alive or self.box.group else wall
+        waited = _runqueue_seconds(self.box, child.pid) - rq0 if alive else 0.0
+        mem = _peak_rss_mb(self.box, child.pid)
         time_s = round(max(cpu, 0.0), 4)
+        idle = max(0.0, wall - max(cpu, 0.0) - waited)
+        outcome = self._outcome(child, reply, time_limit, time_s, mem, cpu_exceeded, idle_exceeded)
+        outcome.idle_s = idle
+        return outcome
+
+    def _outcome(self, child: _Child, reply: dict | None, time_limit: float, time_s: float, mem: float,
+                 cpu_exceeded: bool, idle_exceeded: bool) -> RunOutcome:
         overflow = _output_overflow(self.box, self.out_paths)
+        if _memory_limit_hit(self.box) and not (reply is not None and "violation" in reply):
+            self.stop()
+            return RunOutcome("memory", message="the submission's processes together went over the memory limit",
+                              time_s=time_s, memory_mb=max(mem, float(self.box.limits.memory_mb)))
         if reply is not None and "violation" in reply:
             self.stop()
-            return RunOutcome("violation", message=str(reply["violation"])[:500], time_s=time_s, memory_mb=mem)
+            return RunOutcome("violation", message=reply["violation"], time_s=time_s, memory_mb=mem)
         if overflow or (reply is not None and "output_limit" in reply):
             self.stop()
             return RunOutcome("output_limit", message=f"more than {self.box.limits.output_mb} MiB of output",
@@ -359,6 +507,12 @@ class FunctionWorker:
                 self.stop()
                 return RunOutcome("timeout", message=f"over {time_limit:g} s of CPU time (stopped)",
                                   time_s=max(time_s, time_limit), memory_mb=mem)
+            if idle_exceeded:
+                self.stop()
+                return RunOutcome("timeout", message="stopped: it was idle (sleeping or blocked, not computing) for "
+                                                     f"over {sleep_limit_for(time_limit):g} s, or the submission's "
+                                                     "idle budget is used up", time_s=max(time_s, time_limit),
+                                  memory_mb=mem)
             if child.exit_status is None:
                 self.stop()
                 return RunOutcome("timeout", message=f"no answer within {wall_limit:g} s of wall time",
@@ -367,7 +521,7 @@ class FunctionWorker:
             late = [r for r in child.replies if "violation" in r]
             if late:
                 self.stop()
-                return RunOutcome("violation", message=str(late[0]["violation"])[:500], time_s=time_s)
+                return RunOutcome("violation", message=late[0]["violation"], time_s=time_s)
             outcome = _classify_death(child, mem, self.box.limits.memory_mb)
             outcome.time_s = time_s
             self.stop()
@@ -375,15 +529,14 @@ class FunctionWorker:
         if time_s > time_limit:
             return RunOutcome("timeout", message=f"used {time_s:.2f} s of CPU time (limit {time_limit:g} s)",
                               time_s=time_s, memory_mb=mem)
-        if "error" in reply:
-            err = reply["error"] if isinstance(reply["error"], dict) else {}
-            return _error_outcome(err, time_s, mem)
-        if "bad_type" in reply:
-            return RunOutcome("bad_type", message=f"returned a value of type {str(reply['bad_type'])[:200]}",
-                              time_s=time_s, memory_mb=mem)
         if "garbled" in reply:
             self.stop()
-            return RunOutcome("bad_type", message="the submission wrote unreadable data on the judge's channel",
+            return RunOutcome("bad_type", message="the submission wrote on the judge's channel (protocol "
+                                                  f"violation: {reply['garbled'][:80]})", time_s=time_s, memory_mb=mem)
+        if "error" in reply:
+            return _error_outcome(reply["error"], time_s, mem)
+        if "bad_type" in reply:
+            return RunOutcome("bad_type", message=f"returned a value of type {clean(reply['bad_type'], 200)}",
                               time_s=time_s, memory_mb=mem)
         if "ok" not in reply:
             return RunOutcome("bad_type", message="the worker sent an unreadable answer", time_s=time_s, memory_mb=mem)
@@ -391,8 +544,12 @@ class FunctionWorker:
 
 
 def run_stdio(box: Sandbox, source: str, input_text: str, time_limit: float, forbidden: Sequence[str],
-              filename: str = "submission.py") -> RunOutcome:
-    """Run the submission once as a program with ``input_text`` on stdin; output in ``.value``."""
+              filename: str = "submission.py", idle_left: float = float("inf")) -> RunOutcome:
+    """Run the submission once as a program with ``input_text`` on stdin; output in ``.value``.
+    It is stopped once it has spent ``idle_left`` seconds of wall time not computing."""
+    if idle_left <= 0:
+        return RunOutcome("timeout", message="the submission's wall-time budget is used up (it spent it "
+                                             "sleeping or blocked)", time_s=time_limit)
     config = _child_config(box, "stdio", "", forbidden, filename)
     in_path = os.path.join(box.private_dir, "input.txt")
     out_path, err_path = (os.path.join(box.private_dir, n) for n in ("stdout.txt", "stderr.txt"))
@@ -401,23 +558,36 @@ def run_stdio(box: Sandbox, source: str, input_text: str, time_limit: float, for
     fin = os.open(in_path, os.O_RDONLY)
     fout = os.open(out_path, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o600)
     ferr = os.open(err_path, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o600)
+    _reset_peak(box, 0)
+    cpu0 = _cpu_seconds(box, 0)
     try:
         child = _Child(box, config, source, fin, fout, ferr, time_limit + 1)
     finally:
         for fd in (fin, fout, ferr):
             os.close(fd)
-    wall_limit = wall_limit_for(time_limit)
-    deadline = time.monotonic() + wall_limit
+    wall0 = time.monotonic()
+    waited = 0.0  # run-queue wait of the new process, as last seen while it was alive
+    deadline = wall0 + wall_limit_for(time_limit)
     reply = None
-    cpu_exceeded = False
+    cpu_exceeded = junk = False
     while child.exit_status is None and time.monotonic() < deadline:
         reply = child.wait_reply(min(time.monotonic() + 0.2, deadline), want="__never__")
         if reply is not None and "violation" in reply:
             break
-        if child.exit_status is None and _cpu_seconds(child.pid) > time_limit + 0.05:
+        if reply is not None and ("garbled" in reply or "output_limit" in reply):
+            junk = True
+            break
+        if child.exit_status is not None:
+            break
+        used = _cpu_seconds(box, child.pid) - (cpu0 if box.group else 0.0)
+        if used > time_limit + 0.05:
             cpu_exceeded = True
             break
-    timed_out = cpu_exceeded or (child.exit_status is None and (reply is None or "violation" not in reply))
+        waited = max(waited, _runqueue_seconds(box, child.pid))
+        if time.monotonic() - wall0 - used - waited > min(idle_left, sleep_limit_for(time_limit)):
+            break
+    wall = time.monotonic() - wall0
+    timed_out = cpu_exceeded or (not junk and child.exit_status is None and (reply is None or "violation" not in reply))
     child.kill() if child.exit_status is None else None
     child.drain_after_exit(0.2)
     box.kill_all()
@@ -425,10 +595,26 @@ def run_stdio(box: Sandbox, source: str, input_text: str, time_limit: float, for
     ru = child.rusage
     cpu = (ru.ru_utime + ru.ru_stime) if ru is not None else 0.0
     mem = (ru.ru_maxrss / 1024) if ru is not None else 0.0
+    if box.group is not None:  # the whole sandbox, forked helpers included
+        cpu, mem = max(cpu, _cpu_seconds(box, 0) - cpu0), max(mem, _peak_rss_mb(box, 0))
     time_s = round(cpu, 4)
+    outcome = _stdio_outcome(box, child, time_limit, time_s, mem, timed_out, junk, out_path, err_path)
+    outcome.idle_s = max(0.0, wall - cpu - waited)
+    return outcome
+
+
+def _stdio_outcome(box: Sandbox, child: _Child, time_limit: float, time_s: float, mem: float, timed_out: bool,
+                   junk: bool, out_path: str, err_path: str) -> RunOutcome:
+    cpu = time_s
     violation = child.violation or next((r["violation"] for r in child.replies if "violation" in r), None)
     if violation:
-        return RunOutcome("violation", message=str(violation)[:500], time_s=time_s, memory_mb=mem)
+        return RunOutcome("violation", message=violation, time_s=time_s, memory_mb=mem)
+    if junk:
+        return RunOutcome("bad_type", message="the program wrote on the judge's channel (protocol violation)",
+                          time_s=time_s, memory_mb=mem)
+    if _memory_limit_hit(box):
+        return RunOutcome("memory", message="the program's processes together went over the memory limit",
+                          time_s=time_s, memory_mb=max(mem, float(box.limits.memory_mb)))
     if _output_overflow(box, [out_path, err_path]):
         return RunOutcome("output_limit", message=f"more than {box.limits.output_mb} MiB of output",
                           time_s=time_s, memory_mb=mem)

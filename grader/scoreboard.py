@@ -4,6 +4,11 @@ Penalty for a solved problem = minutes from the start to the first AC submission
 for each rejected submission before it. The start is ``--start`` (epoch seconds or ISO time), else
 the student's timed start for that problem, else the first submission in the store.
 
+A timed problem's late policy applies: a submission rejected for lateness (multiplier 0) does
+not solve the problem, and the ``points`` column sums each problem's best score after the late
+multiplier (an AC worth 100 submitted late under ``late_multiplier: 0.5`` counts 50, marked
+``late`` in its cell).
+
 Example:
     >>> rows = compute(ResultStore(":memory:"))
     >>> rows
@@ -40,8 +45,15 @@ def compute(store: ResultStore, start: float | None = None, problems: list[str] 
     timed = {(r[0], r[1]): r[2] for r in store.db.execute("SELECT student, problem, started_at FROM timed")}
     board: dict[str, dict] = {}
     for s in subs:  # in submission order
-        row = board.setdefault(s["student"], {"student": s["student"], "solved": 0, "penalty": 0, "problems": {}})
-        cell = row["problems"].setdefault(s["problem"], {"tries": 0, "solved_at_min": None})
+        row = board.setdefault(s["student"], {"student": s["student"], "solved": 0, "penalty": 0, "points": 0.0,
+                                              "problems": {}})
+        cell = row["problems"].setdefault(s["problem"], {"tries": 0, "solved_at_min": None, "points": 0.0,
+                                                         "late": False})
+        mult = 1.0 if s["multiplier"] is None else float(s["multiplier"])
+        final = round((s["score"] or 0) * mult, 2)
+        if final > cell["points"]:
+            row["points"] = round(row["points"] - cell["points"] + final, 2)
+            cell["points"], cell["late"] = final, mult < 1.0
         if cell["solved_at_min"] is not None:
             continue
         cell["tries"] += 1
@@ -59,7 +71,7 @@ def compute(store: ResultStore, start: float | None = None, problems: list[str] 
 
 def format_board(rows: list[dict]) -> str:
     problems = sorted({p for r in rows for p in r["problems"]})
-    head = ["rank", "student", "solved", "penalty", *problems]
+    head = ["rank", "student", "solved", "penalty", "points", *problems]
     table = [head]
     for r in rows:
         cells = []
@@ -68,9 +80,10 @@ def format_board(rows: list[dict]) -> str:
             if c is None:
                 cells.append("")
             elif c["solved_at_min"] is not None:
-                cells.append(f"+{c['tries'] - 1 or ''} {c['solved_at_min']}'".replace("+ ", "+"))
+                cells.append(f"+{c['tries'] - 1 or ''} {c['solved_at_min']}'".replace("+ ", "+")
+                             + (f" late {c['points']:g}" if c["late"] else ""))
             else:
-                cells.append(f"-{c['tries']}")
-        table.append([str(r["rank"]), r["student"], str(r["solved"]), str(r["penalty"]), *cells])
+                cells.append(f"-{c['tries']}" + (f" late {c['points']:g}" if c["late"] else ""))
+        table.append([str(r["rank"]), r["student"], str(r["solved"]), str(r["penalty"]), f"{r['points']:g}", *cells])
     widths = [max(len(row[i]) for row in table) for i in range(len(head))]
     return "\n".join("  ".join(c.ljust(w) for c, w in zip(row, widths)) for row in table)

@@ -17,6 +17,7 @@ import sqlite3
 import time
 from pathlib import Path
 
+from .text import clean, csv_cell
 from .verdicts import JudgeResult, TestResult, Verdict
 
 SCHEMA = """
@@ -50,7 +51,7 @@ class ResultStore:
 
     def begin(self, student: str, problem: str, file: str, sha: str, submitted_at: float) -> None:
         self.db.execute("INSERT OR IGNORE INTO submissions (student, problem, sha, file, submitted_at, status) "
-                        "VALUES (?, ?, ?, ?, ?, 'running')", (student, problem, sha, file, submitted_at))
+                        "VALUES (?, ?, ?, ?, ?, 'running')", (student, problem, sha, clean(file, 1000), submitted_at))
 
     def add_test(self, student: str, problem: str, sha: str, r: TestResult) -> None:
         self.db.execute("INSERT OR REPLACE INTO results VALUES (?,?,?,?,?,?,?,?,?,?,?)",
@@ -90,7 +91,8 @@ class ResultStore:
         return out
 
     def export_csv(self, problem: str, path: str | Path) -> int:
-        """One row per student (LMS import): student, problem, score, max_score, verdict, file."""
+        """One row per student (LMS import): student, problem, score, max_score, verdict, file.
+        Text cells are formula-escaped (a folder named ``=HYPERLINK(...)`` stays text)."""
         latest = self.latest(problem)
         with open(path, "w", newline="") as f:
             w = csv.writer(f)
@@ -98,5 +100,6 @@ class ResultStore:
             for student in sorted(latest):
                 s = latest[student]
                 score = round(s["score"] * (s["multiplier"] if s["multiplier"] is not None else 1.0), 2)
-                w.writerow([student, problem, score, s["max_score"], s["verdict"], s["file"], s["note"]])
+                w.writerow([csv_cell(v) for v in (student, problem, score, s["max_score"], s["verdict"], s["file"],
+                                                  s["note"])])
         return len(latest)

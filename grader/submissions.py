@@ -2,7 +2,8 @@
 how to run it (function mode when it defines the entry function, stdio mode when it reads stdin).
 
 Parsing here is static (``ast``), in the grader's process, on size-capped text: the code itself
-only ever runs in the sandbox.
+only ever runs in the sandbox. Files are read with :func:`read_submission_bytes`: no symbolic
+links are followed, only regular files are read, and the size is checked before reading.
 
 Example:
     >>> s = Submission.from_source("def delaunay(points):\\n    return []\\n", "s.py")
@@ -15,7 +16,9 @@ from __future__ import annotations
 import ast
 import difflib
 import json
+import os
 import re
+import stat
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -25,7 +28,63 @@ _STDIN_NAMES = {"input", "stdin", "fileinput"}
 
 
 class SubmissionError(ValueError):
-    """The file cannot be a submission at all (wrong type, unreadable, too large)."""
+    """The file cannot be a submission at all (wrong type, unreadable, too large, a link)."""
+
+
+def read_submission_bytes(path: str | os.PathLike, limit: int = MAX_SOURCE_BYTES, follow_links: bool = False) -> bytes:
+    """The bytes of a submission file, read safely: the last path component is opened with
+    ``O_NOFOLLOW`` (a symbolic link is refused, never followed), it must be a regular file (not a
+    FIFO or a device), and its size is checked on the open file before anything is read.
+    Raises :class:`SubmissionError` with a message that names only the file, never its content.
+    ``follow_links=True`` (for a file named explicitly on the command line, never for files found
+    in a class folder) resolves links first, then reads the target under the same checks.
+
+    >>> import tempfile, pathlib
+    >>> d = pathlib.Path(tempfile.mkdtemp()); (d / "a.py").write_text("x = 1\\n")
+    6
+    >>> read_submission_bytes(d / "a.py")
+    b'x = 1\\n'
+    >>> (d / "b.py").symlink_to(d / "a.py")
+    >>> try:
+    ...     read_submission_bytes(d / "b.py")
+    ... except SubmissionError as exc:
+    ...     print(exc)
+    b.py is a symbolic link, not a regular file: links are not followed
+    """
+    path = os.path.realpath(path) if follow_links else os.fspath(path)
+    parent, name = os.path.split(path)
+    flags = os.O_RDONLY | os.O_NOFOLLOW | os.O_NONBLOCK | os.O_CLOEXEC | os.O_NOCTTY
+    try:  # the folder holding the file (a student's folder) must not be a link either
+        dir_fd = os.open(parent or ".", os.O_RDONLY | os.O_DIRECTORY | os.O_NOFOLLOW | os.O_CLOEXEC)
+    except OSError as exc:
+        what = "a symbolic link" if os.path.islink(parent) else f"unreadable ({exc.strerror})"
+        raise SubmissionError(f"the folder of {name} is {what}: links are not followed") from None
+    try:
+        fd = os.open(name, flags, dir_fd=dir_fd)
+    except OSError as exc:
+        if os.path.islink(path):
+            raise SubmissionError(f"{name} is a symbolic link, not a regular file: links are not followed") from None
+        raise SubmissionError(f"cannot read {name}: {exc.strerror}") from None
+    finally:
+        os.close(dir_fd)
+    try:
+        st = os.fstat(fd)
+        if not stat.S_ISREG(st.st_mode):
+            raise SubmissionError(f"{name} is not a regular file")
+        if st.st_size > limit:
+            raise SubmissionError(f"{name} is larger than {limit >> 10} KiB")
+        chunks, size = [], 0
+        while size <= limit:
+            chunk = os.read(fd, min(1 << 16, limit + 1 - size))
+            if not chunk:
+                break
+            chunks.append(chunk)
+            size += len(chunk)
+        if size > limit:  # it grew after the check
+            raise SubmissionError(f"{name} is larger than {limit >> 10} KiB")
+        return b"".join(chunks)
+    finally:
+        os.close(fd)
 
 
 def notebook_code(text: str) -> str:
@@ -38,13 +97,21 @@ def notebook_code(text: str) -> str:
     try:
         nb = json.loads(text)
     except ValueError as exc:
-        raise SubmissionError(f"not a valid notebook (JSON): {exc}") from None
+        raise SubmissionError(f"not a valid notebook (JSON): {str(exc)[:100]}") from None
+    except RecursionError:
+        raise SubmissionError("not a valid notebook: the JSON is nested too deeply") from None
+    cells = nb.get("cells") if isinstance(nb, dict) else None
+    if not isinstance(cells, list):
+        raise SubmissionError("not a valid notebook: no list of cells")
     chunks = []
-    for cell in nb.get("cells", []) if isinstance(nb, dict) else []:
+    for cell in cells:
         if not isinstance(cell, dict) or cell.get("cell_type") != "code":
             continue
         src = cell.get("source", "")
-        src = "".join(src) if isinstance(src, list) else str(src)
+        if isinstance(src, list) and all(isinstance(s, str) for s in src):
+            src = "".join(src)
+        elif not isinstance(src, str):
+            raise SubmissionError("not a valid notebook: a code cell's source is not text")
         if src.lstrip().startswith("%%"):
             continue  # a cell magic (%%time, %%bash...) makes the whole cell non-Python
         lines = [ln for ln in src.splitlines() if not _MAGIC.match(ln)]
@@ -61,17 +128,12 @@ class Submission:
     filename: str
 
     @classmethod
-    def from_path(cls, path: str | Path) -> "Submission":
+    def from_path(cls, path: str | Path, follow_links: bool = False) -> "Submission":
+        """Read a ``.py`` or ``.ipynb`` file with :func:`read_submission_bytes`."""
         path = Path(path)
         if path.suffix not in (".py", ".ipynb"):
             raise SubmissionError(f"{path.name}: a submission must be a .py file or an .ipynb notebook")
-        try:
-            raw = path.read_bytes()
-        except OSError as exc:
-            raise SubmissionError(f"cannot read {path}: {exc.strerror}") from None
-        if len(raw) > MAX_SOURCE_BYTES:
-            raise SubmissionError(f"{path.name} is larger than {MAX_SOURCE_BYTES >> 10} KiB")
-        text = raw.decode("utf-8", errors="replace")
+        text = read_submission_bytes(path, follow_links=follow_links).decode("utf-8", errors="replace")
         source = notebook_code(text) if path.suffix == ".ipynb" else text
         return cls(source, "submission.py")
 

@@ -11,7 +11,11 @@ problem's ``course.yaml`` ``timed`` section:
 
 Example:
     python -m grader timed start bowyer-watson-timed ada --db exam.sqlite
+    python -m grader timed status bowyer-watson-timed ada --db exam.sqlite
     python -m grader timed submit bowyer-watson-timed ada ada.py --db exam.sqlite
+
+    >>> minutes_left(deadline=1800.0, now=600.0)
+    20.0
 """
 
 from __future__ import annotations
@@ -24,6 +28,7 @@ from pathlib import Path
 from .judge import Judge
 from .problems import load_problem
 from .store import ResultStore
+from .submissions import read_submission_bytes
 from .verdicts import JudgeResult
 
 POLICIES = ("multiplier", "reject", "accept")
@@ -41,14 +46,53 @@ class TimedOutcome:
 
 def _settings(problem_id: str) -> dict:
     p = load_problem(problem_id)
+    if not p.timed:
+        raise ValueError(f"problem {problem_id!r} has no timed settings (a `timed:` section in its course.yaml); "
+                         "timed attempts are only for timed problems")
     t = {"duration_min": 30, "grace_s": 0, "late_policy": "multiplier", "late_multiplier": 0.5, **p.timed}
     if t["late_policy"] not in POLICIES:
         raise ValueError(f"problem {problem_id!r}: late_policy must be one of {POLICIES}, got {t['late_policy']!r}")
     return t
 
 
+def clock(epoch: float, now: float | None = None) -> str:
+    """``epoch`` as local clock time: ``14:05:00 CET (today)``, or with the date on another day."""
+    now = time.time() if now is None else now
+    t = time.localtime(epoch)
+    same_day = time.localtime(now)[:3] == t[:3]
+    return time.strftime("%H:%M:%S %Z", t) + " (today)" if same_day else time.strftime("%Y-%m-%d %H:%M:%S %Z", t)
+
+
+def minutes_left(deadline: float, now: float | None = None) -> float:
+    """Minutes until ``deadline`` (negative once it has passed)."""
+    return (deadline - (time.time() if now is None else now)) / 60
+
+
+def describe(info: dict, now: float | None = None) -> str:
+    """One line for a student: start, deadline as local time, minutes left (or how late)."""
+    left = minutes_left(info["deadline"], now)
+    when = f"{left:.1f} minutes left" if left >= 0 else f"deadline passed {-left:.1f} minutes ago"
+    head = (f"{info['student']}: {info['problem']} already started at {clock(info['started_at'], now)}"
+            if info.get("already") else
+            f"{info['student']}: {info['problem']} started at {clock(info['started_at'], now)}")
+    tail = f"; submitted {clock(info['submitted_at'], now)}" if info.get("submitted_at") else ""
+    return f"{head}; {info['duration_min']} minutes, deadline {clock(info['deadline'], now)}: {when}{tail}"
+
+
+def status(problem: str, student: str, store: ResultStore, now: float | None = None) -> dict:
+    """The recorded attempt: start, deadline, minutes left, last submission (``ValueError`` if none)."""
+    t = _settings(problem)
+    row = store.db.execute("SELECT started_at, deadline, submitted_at FROM timed WHERE student=? AND problem=?",
+                           (student, problem)).fetchone()
+    if row is None:
+        raise ValueError(f"{student} has not started a timed attempt at {problem!r} (run `timed start` first)")
+    return {"student": student, "problem": problem, "started_at": row[0], "deadline": row[1],
+            "submitted_at": row[2], "duration_min": t["duration_min"],
+            "minutes_left": round(minutes_left(row[1], now), 2)}
+
+
 def start(problem: str, student: str, store: ResultStore, now: float | None = None) -> dict:
-    """Start the clock (idempotent: a second start keeps the first start time)."""
+    """Start the clock (idempotent: a second start keeps the first start time, ``already`` is True)."""
     t = _settings(problem)
     now = time.time() if now is None else now
     row = store.db.execute("SELECT started_at, deadline FROM timed WHERE student=? AND problem=?",
@@ -57,9 +101,12 @@ def start(problem: str, student: str, store: ResultStore, now: float | None = No
         deadline = now + 60 * float(t["duration_min"])
         store.db.execute("INSERT INTO timed (student, problem, started_at, deadline) VALUES (?,?,?,?)",
                          (student, problem, now, deadline))
-        row = (now, deadline)
+        row, already = (now, deadline), False
+    else:
+        already = True
     return {"student": student, "problem": problem, "started_at": row[0], "deadline": row[1],
-            "duration_min": t["duration_min"]}
+            "duration_min": t["duration_min"], "already": already,
+            "minutes_left": round(minutes_left(row[1], now), 2)}
 
 
 def submit(problem: str, student: str, path: str | Path, store: ResultStore, now: float | None = None,
@@ -75,20 +122,21 @@ def submit(problem: str, student: str, path: str | Path, store: ResultStore, now
     elapsed = now - started
     late = now > deadline + float(t["grace_s"])
     path = Path(path)
-    sha = hashlib.sha256(path.read_bytes()).hexdigest()[:16]
+    sha = hashlib.sha256(read_submission_bytes(path, follow_links=True)).hexdigest()[:16]  # a file named by the caller
     judge = judge or Judge(problem, hide=[str(path.resolve().parent), str(Path(store.path).resolve().parent)])
     store.begin(student, problem, str(path), sha, now)
     result = judge.judge_path(path, on_test=lambda r: store.add_test(student, problem, sha, r),
-                              prior=store.prior(student, problem, sha))
+                              prior=store.prior(student, problem, sha), follow_links=True)
     multiplier, note = 1.0, f"elapsed {elapsed / 60:.1f} min"
     if late:
         over = (now - deadline) / 60
         if t["late_policy"] == "reject":
-            multiplier, note = 0.0, f"late by {over:.1f} min: rejected"
+            multiplier, note = 0.0, f"{note}, late by {over:.1f} min: rejected"
         elif t["late_policy"] == "multiplier":
-            multiplier, note = float(t["late_multiplier"]), f"late by {over:.1f} min: score x{t['late_multiplier']}"
+            multiplier = float(t["late_multiplier"])
+            note = f"{note}, late by {over:.1f} min: score x{t['late_multiplier']}"
         else:
-            note = f"late by {over:.1f} min (accepted)"
+            note = f"{note}, late by {over:.1f} min (accepted)"
     store.finish(student, problem, sha, result, multiplier, note)
     store.db.execute("UPDATE timed SET submitted_at=?, elapsed_s=?, sha=?, late=? WHERE student=? AND problem=?",
                      (now, elapsed, sha, int(late), student, problem))

@@ -1,4 +1,4 @@
-"""Verdicts and scoring (SPEC section 5): per-test results, per-group points, the overall verdict.
+"""Verdicts and scoring: per-test results, per-group points, the overall verdict.
 
 Example:
     >>> t = TestResult("tiny/1", "tiny", Verdict.AC, 0.01)
@@ -106,8 +106,19 @@ class JudgeResult:
             "problem": self.problem, "submission": self.submission, "verdict": self.verdict,
             "score": self.score, "max_score": self.max_score, "mode": self.mode,
             "groups": [{"name": g, "points": p, "passed": self.group_passed(g)} for g, p in self.group_points.items()],
-            "tests": [t.to_json() for t in self.tests], "judge_time_s": round(self.judge_time_s, 3), **self.extra,
+            "tests": [t.to_json() for t in self.tests], "judge_time_s": round(self.judge_time_s, 3),
+            "sandbox": _sandbox_mechanism(), **self.extra,
         }
+
+
+def _sandbox_mechanism() -> str:
+    """Which jail judged (``bwrap+cgroup-v1+seccomp``, ``namespaces+...``, ``rlimits``)."""
+    from .sandbox import mechanism  # late: verdicts stays importable without the sandbox
+    return mechanism()
+
+
+FAILURES_SHOWN = 12  #: failing tests described below the table (each with its input when small)
+MESSAGE_SHOWN = 3000
 
 
 def format_table(result: JudgeResult) -> str:
@@ -124,9 +135,16 @@ def format_table(result: JudgeResult) -> str:
     lines.append("")
     lines.append(f"{result.problem}: {result.verdict} ({DESCRIPTIONS.get(result.verdict, '')}), "
                  f"score {result.score}/{result.max_score}  [{groups}]")
-    first_bad = next((t for t in result.tests if t.verdict not in (Verdict.AC, Verdict.SKIPPED)), None)
-    if first_bad is not None:
-        lines.append(f"first failure: {first_bad.name}: {first_bad.message}")
-        if first_bad.input_preview:
-            lines.append("its input:\n" + first_bad.input_preview)
+    bad = [t for t in result.tests if t.verdict not in (Verdict.AC, Verdict.SKIPPED)]
+    shown: set[str] = set()
+    for k, t in enumerate(bad):
+        if len(shown) == FAILURES_SHOWN:
+            lines.append(f"... {len(bad) - k} more failing tests (all of them: --json or --report)")
+            break
+        if t.message in shown and not t.input_preview:  # e.g. a compile error: once is enough
+            continue
+        shown.add(t.message)
+        lines.append(f"{'first failure' if k == 0 else 'also failed'}: {t.name}: {t.message[:MESSAGE_SHOWN]}")
+        if t.input_preview:
+            lines.append("its input:\n" + t.input_preview.rstrip("\n"))
     return "\n".join(lines)

@@ -11,7 +11,7 @@ This is the version students read (the fast one is ``Delaunay`` in
 3. delete the bad triangles;
 4. connect p to every boundary edge.
 
-In pseudocode (compare with the tutorial's section 2.1)::
+In pseudocode (compare with the original code in ``tutorial_bugs.py``)::
 
     triangulation = the two ghost triangles of the first two points   # no super-triangle
     for p in the other points:
@@ -20,7 +20,8 @@ In pseudocode (compare with the tutorial's section 2.1)::
         remove the bad triangles; add (a, b, p) for every boundary edge (a, b)
     return the triangles that do not touch the vertex at infinity
 
-and fixes what the tutorial gets wrong (course SPEC section 9, items 1-4):
+and fixes the four bugs of the original tutorial's code (reproduced in
+``reference_impl/tutorial_bugs.py``):
 
 Fix 1, orientation.  The in-circle determinant says "inside" only for a
 counter-clockwise triangle (for a clockwise one its sign flips).  Every
@@ -105,7 +106,7 @@ INFINITE = -1
 """Index of the vertex at infinity; ghost triangles are stored as (u, v, INFINITE)."""
 
 TUTORIAL_POINTS = ((1.0, 1.0), (3.0, 2.0), (5.0, 1.0), (4.0, 4.0))
-"""The tutorial's dry-run example (section 7)."""
+"""The 4-point dry-run example of the lessons."""
 
 
 Point = tuple[float, float]
@@ -477,7 +478,7 @@ def bowyer_watson(points, *, trace: list | None = None, locate: str = "scan",
 
 # ----------------------------------------------------------------------------- the dry run
 def dry_run(points=TUTORIAL_POINTS, order: str = "input") -> str:
-    """The step-by-step dry run as text (the tutorial's section 7, done right).
+    """The step-by-step dry run as text (of the original tutorial's 4-point example, done right).
 
     By default the points are inserted in the given order, as in the tutorial;
     ``order="canonical"`` shows what ``bowyer_watson(points)`` does.

@@ -8,7 +8,7 @@ instead of recomputed for the whole network.  ``DynamicNetwork`` wraps the fast
 vertex removal (the star of the node is deleted and its hole re-triangulated, in time
 proportional to the node's degree), a neighbour query a walk around the node.
 
-What the tutorial gets wrong here (SPEC section 9, item 10):
+What the original Bowyer-Watson tutorial claims wrongly here:
 
 * Delaunay neighbours are **not "the nearest three nodes"**.  A node has on average
   fewer than six Delaunay neighbours in the plane, but any number is possible (the

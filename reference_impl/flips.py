@@ -24,7 +24,8 @@ whose circumcircles are "lower" on the lifting paraboloid, so no triangulation
 repeats (at most O(n^2) flips); when no edge is illegal, every edge is locally
 Delaunay, hence the triangulation is Delaunay (Delaunay's lemma).  Delaunay
 maximises the minimum angle, but that does not make it well shaped: thin point
-sets give thin triangles (SPEC section 9, item 9); quality meshing adds points.
+sets give thin triangles (contrary to the original tutorial's claim); quality
+meshing adds points.
 
 >>> pts = [(0, 0), (2, 0), (2, 1), (0, 1), (1, 0.5)]
 >>> tris = [(0, 1, 4), (1, 2, 4), (2, 3, 4), (3, 0, 4)]

@@ -6,7 +6,7 @@ it once (``polygon_triangulation``, below); each
 ``shortest_path(start, goal)`` query then returns the polyline
 ``[start, corner, ..., goal]`` of *optimal* length, or ``None`` when start or
 goal is not in the free space.  ``shortest_path(boundary, holes, start, goal)``
-does both in one call (SPEC section 4, problem ``navmesh``).
+does both in one call (the library behind the course's ``navmesh`` problem).
 
 The mesh: ``polygon_triangulation(boundary, holes)`` runs the constrained
 Delaunay triangulation (``constrained.py``) on the polygon's vertices with its
@@ -592,7 +592,7 @@ class NavMesh:
 
 def shortest_path(boundary: ArrayLike, holes: Sequence[ArrayLike] | None, start: ArrayLike,
                   goal: ArrayLike) -> list[Point] | None:
-    """Euclidean shortest path from start to goal inside a polygon with holes (SPEC: ``navmesh``).
+    """Euclidean shortest path from start to goal inside a polygon with holes (as in problem ``navmesh``).
 
     ``boundary``: a simple polygon; ``holes``: simple polygons strictly inside it,
     disjoint (any orientation; invalid polygons raise ``ValueError``).  The

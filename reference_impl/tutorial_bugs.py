@@ -1,4 +1,5 @@
-"""The tutorial's Bowyer-Watson, reproduced on purpose: an exhibit of what goes wrong.
+"""The original Bowyer-Watson tutorial's code (the one this course corrects), reproduced on
+purpose: an exhibit of what goes wrong.
 
 Run the examples:  python -m doctest reference_impl/tutorial_bugs.py
 
@@ -53,10 +54,17 @@ edge can have the new point on its right, which makes a clockwise triangle,
 whose in-circle sign is then backwards for every later point.  With a correct
 boundary, every new triangle is counter-clockwise by construction (the course's
 version still checks it with ``orient2d``).
->>> check("cocircular", fix=["orientation", "boundary"])[0]   # rounding noise in the determinant
-False
->>> check("cocircular", fix=ALL_FIXES)
-(True, 'ok')
+Rounding noise in the determinant is the remaining mistake: on the 12 integer
+points of x^2 + y^2 = 25 every in-circle test is an exact tie, which ``np.linalg.det``
+decides by noise.  Which insertion orders break depends on the machine's BLAS, so
+ten shuffles are tried; the exact predicate gets all of them right:
+
+>>> import random
+>>> orders = [random.Random(s).sample(RING_25, 12) for s in range(10)]
+>>> any(not check_delaunay(q, naive_bowyer_watson(q, fix=["orientation", "boundary"]))[0] for q in orders)
+True
+>>> all(check_delaunay(q, naive_bowyer_watson(q, fix=ALL_FIXES))[0] for q in orders)
+True
 
 With all three fixes, what is left is the finite super-triangle, and it still
 fails (mistakes 4 and 5): only the vertex at infinity of ``bowyer_watson``
@@ -81,6 +89,7 @@ False
 """
 from __future__ import annotations
 
+import itertools
 from typing import Iterable, Sequence
 
 import numpy as np
@@ -88,11 +97,15 @@ import numpy as np
 from reference_impl.points import as_points
 from reference_impl.predicates import incircle, orient2d
 
-__all__ = ["naive_bowyer_watson", "det_in_circumcircle", "tutorial_boundary",
+__all__ = ["naive_bowyer_watson", "RING_25", "tutorial_det", "det_in_circumcircle", "tutorial_boundary",
            "epsilon_says_degenerate", "SUPER_TRIANGLE", "ALL_FIXES", "EXHIBITS"]
 
 Point = tuple[float, float]
 CoordTriangle = tuple[Point, Point, Point]
+
+RING_25: tuple[Point, ...] = tuple((float(x), float(y)) for x in range(-5, 6) for y in range(-5, 6)
+                                  if x * x + y * y == 25)
+"""The 12 integer points on the circle x^2 + y^2 = 25: every four of them are cocircular."""
 
 SUPER_TRIANGLE: CoordTriangle = ((-1e5, -1e5), (1e5, -1e5), (0.0, 1e5))
 """The tutorial's fixed super-triangle."""
@@ -112,8 +125,30 @@ EXHIBITS: dict[str, tuple[Point, ...]] = {
 triangulation except "square" and "cocircular", which have cocircular ties)."""
 
 
+def tutorial_det(triangle: Sequence[Point], p: Point) -> float:
+    """The tutorial's in-circle determinant: ``np.linalg.det`` of the lifted 3x3 matrix.
+
+    Positive means "p inside" only for a counter-clockwise triangle.  For four
+    points exactly on one circle the true value is 0, but LAPACK's rounded
+    elimination often returns a tiny non-zero number whose sign is noise (which
+    ties come out non-zero depends on the machine's BLAS kernels).  Of the 495
+    quadruples of the 12 integer points on x^2 + y^2 = 25, some always do:
+
+    >>> quads = list(itertools.combinations(RING_25, 4))
+    >>> len(RING_25), len(quads), any(tutorial_det(q[:3], q[3]) != 0 for q in quads)
+    (12, 495, True)
+    >>> all(incircle(*q) == 0 for q in quads)      # the exact predicate: every one a tie
+    True
+    """
+    (ax, ay), (bx, by), (cx, cy) = triangle
+    dx, dy = p
+    rows = [[ux - dx, uy - dy, (ux - dx) ** 2 + (uy - dy) ** 2]
+            for ux, uy in ((ax, ay), (bx, by), (cx, cy))]
+    return float(np.linalg.det(np.array(rows, dtype=float)))
+
+
 def det_in_circumcircle(triangle: Sequence[Point], p: Point) -> bool:
-    """The tutorial's in-circle test: ``np.linalg.det(M) > 0`` for the lifted 3x3 matrix.
+    """The tutorial's in-circle test: ``tutorial_det(triangle, p) > 0``.
 
     Mistake 1: for a clockwise triangle the sign flips, so a point at the
     centre of the circle is reported outside:
@@ -123,19 +158,10 @@ def det_in_circumcircle(triangle: Sequence[Point], p: Point) -> bool:
     >>> det_in_circumcircle([(0, 0), (0, 2), (2, 0)], (1, 1))     # same triangle, clockwise
     False
 
-    Mistake 2: in floating point the determinant of four points that are
-    exactly on one circle comes out with a sign from rounding, so exact ties
-    are not reported as ties (the exact ``incircle`` says 0):
-
-    >>> tri, p = [(-5, 0), (-4, -3), (-4, 3)], (-3, -4)           # all on x^2 + y^2 = 25
-    >>> det_in_circumcircle(tri, p), incircle(*tri, p)
-    (True, 0)
+    Mistake 2: an exact tie (four points on one circle) is decided by rounding
+    noise (see ``tutorial_det``), where the exact ``incircle`` says 0.
     """
-    (ax, ay), (bx, by), (cx, cy) = triangle
-    dx, dy = p
-    rows = [[ux - dx, uy - dy, (ux - dx) ** 2 + (uy - dy) ** 2]
-            for ux, uy in ((ax, ay), (bx, by), (cx, cy))]
-    return bool(np.linalg.det(np.array(rows, dtype=float)) > 0)
+    return tutorial_det(triangle, p) > 0
 
 
 def tutorial_boundary(bad: Iterable[Sequence]) -> list[tuple]:

@@ -10,6 +10,7 @@ correctness suite (shared with the fast ``Delaunay``) is ``test_delaunay_shared.
 from __future__ import annotations
 
 import itertools
+import random
 import re
 from fractions import Fraction
 
@@ -19,10 +20,11 @@ import pytest
 from pointsets import circle, collinear, grid, integer_circle, uniform, with_duplicates
 from reference_impl.bowyer_watson import (INFINITE, TUTORIAL_POINTS, Step, bowyer_watson,
                                           cavity_boundary, dry_run, insertion_order)
-from reference_impl.tutorial_bugs import (ALL_FIXES, EXHIBITS, det_in_circumcircle,
+from reference_impl.tutorial_bugs import (ALL_FIXES, EXHIBITS, RING_25, det_in_circumcircle, tutorial_det,
                                           epsilon_says_degenerate, naive_bowyer_watson,
                                           tutorial_boundary)
 from reference_impl.verify import check_delaunay, exact_coordinates, incircle_exact, orient_exact
+from reference_impl.predicates import incircle
 
 # ----------------------------------------------------------------------------- oracles
 
@@ -329,7 +331,9 @@ def test_each_exhibit_fails_for_the_stated_reason():
         assert check(name, fix=["boundary"]) == (True, "ok")
     assert "clockwise" in check("clockwise")[1] and "zero area" in check("zero-area")[1]
     # the floating determinant: orientation and boundary fixed is not enough, the exact predicate is
-    assert not check("cocircular", fix=["orientation", "boundary"])[0]
+    orders = [random.Random(seed).sample(RING_25, 12) for seed in range(10)]  # BLAS decides which break
+    assert any(not check_delaunay(q, naive_bowyer_watson(q, fix=["orientation", "boundary"]))[0] for q in orders)
+    assert all(check_delaunay(q, naive_bowyer_watson(q, fix=ALL_FIXES))[0] for q in orders)
     assert check("cocircular", fix=ALL_FIXES) == (True, "ok")
     # the finite super-triangle: nothing but the vertex at infinity cures these
     assert naive_bowyer_watson(EXHIBITS["large"], fix=ALL_FIXES).shape == (0, 3)
@@ -341,7 +345,9 @@ def test_each_exhibit_fails_for_the_stated_reason():
 def test_predicate_level_bugs():
     assert det_in_circumcircle([(0, 0), (2, 0), (0, 2)], (1, 1))
     assert not det_in_circumcircle([(0, 0), (0, 2), (2, 0)], (1, 1))   # clockwise: sign flipped
-    assert det_in_circumcircle([(-5, 0), (-4, -3), (-4, 3)], (-3, -4))  # exactly cocircular
+    quads = list(itertools.combinations(RING_25, 4))
+    assert all(incircle(*q) == 0 for q in quads)                        # every quadruple is a tie...
+    assert any(tutorial_det(q[:3], q[3]) != 0 for q in quads)          # ...that det does not always see
     assert epsilon_says_degenerate((0, 0), (0, 1e-6), (2e-6, 0))         # a valid triangle
     assert bowyer_watson([(0, 0), (0, 1e-6), (2e-6, 0)]).shape == (1, 3)
 

@@ -1,9 +1,11 @@
-"""Wrong answer: the tutorial's Bowyer-Watson transcribed faithfully (see SPEC section 9).
+"""Wrong answer: the original tutorial's Bowyer-Watson transcribed faithfully
+(the same code, with the inputs on which each bug shows: reference_impl/tutorial_bugs.py).
 
 Its bugs: the in-circle determinant is only right for counter-clockwise triangles but triangles
 are never oriented; the cavity boundary keeps an edge shared by two bad triangles (it skips the
 second copy instead of dropping both); a fixed super-triangle at +-1e5; np.linalg.det in floats.
-Expected verdict: WA (already on the tutorial's own 4-point example).
+Expected verdict: WA (it happens to get the tutorial's own 4-point example right).
+Killed by: tiny (a square with its centre, or ten random points: the kept edge makes triangles overlap).
 
 Function mode: delaunay(points) / bowyer_watson(points). Stdio: python3 wrong_tutorial.py < input
 

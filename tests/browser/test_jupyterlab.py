@@ -39,8 +39,9 @@ SHOTS = ROOT / "build" / "screenshots"
 LESSON_01 = "01-prerequisites.ipynb"
 LESSON_03 = "03-bowyer-watson-step-by-step.ipynb"
 
-pytestmark = pytest.mark.skipif(not os.path.exists(CHROMIUM),
-                                reason="Debian chromium is not installed (apt-get install chromium)")
+pytestmark = [pytest.mark.skipif(not os.path.exists(CHROMIUM),
+                                 reason="Debian chromium is not installed (apt-get install chromium)"),
+              pytest.mark.xdist_group("jupyterlab")]  # one worker starts the lab server once
 sync_api = pytest.importorskip("playwright.sync_api", reason="playwright is not installed (pip install '.[test]')")
 
 

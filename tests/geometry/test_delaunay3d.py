@@ -2,11 +2,12 @@
 
 Run: .venv/bin/python -m pytest tests/geometry/test_delaunay3d.py -q
 
-Oracles: an exact validity checker written here with Python integers (it shares
-no code with the library), a brute-force empty-sphere check on small sets,
+Oracles: the exact validity checker ``reference_impl.verify.check_delaunay_3d``
+(Python integers; it shares no code with the numba kernel), a brute-force empty-sphere check on small sets,
 ``scipy.spatial.Delaunay`` (Qhull) on general-position sets, where the
 Delaunay tetrahedralisation is unique, and ``scipy.spatial.ConvexHull`` for the
-hull volume (its facets are themselves checked exactly).
+hull volume (its facets are themselves checked exactly), which cross-checks the
+exact checker on the degenerate sets.
 """
 from __future__ import annotations
 
@@ -19,6 +20,7 @@ from scipy.spatial import ConvexHull, Delaunay as QhullDelaunay
 
 from reference_impl.delaunay3d import (Delaunay3D, _Mesh, delaunay_3d, hilbert_index_3d,
                                        insertion_order_3d)
+from reference_impl.verify import check_delaunay_3d
 
 
 # ----------------------------------------------------------------------------- exact checker
@@ -65,57 +67,6 @@ def hull_volume6(P: list, points: np.ndarray) -> int:
         assert min(s) >= 0 or max(s) <= 0, "Qhull facet is not supporting"
         vol += abs(orient(a, b, c, tuple(c4)))
     return vol // 64
-
-
-def check_delaunay_3d(points, tets) -> tuple[bool, str]:
-    """Exactly: is ``tets`` a Delaunay tetrahedralisation of ``points``? (see module doc)."""
-    P = int_points(points)
-    first: dict = {}
-    rep = [first.setdefault(p, i) for i, p in enumerate(P)]
-    distinct = sorted(set(rep))
-    T = [tuple(rep[int(v)] for v in t) for t in np.asarray(tets).reshape(-1, 4)]
-    base = None
-    for i in distinct[1:]:
-        for j in distinct:
-            if j > i and any(orient(P[distinct[0]], P[i], P[j], P[k]) for k in distinct):
-                base = (distinct[0], i, j)
-                break
-        if base:
-            break
-    if base is None:
-        return (not T), "flat input must give no tetrahedra"
-    for t in T:
-        if orient(*(P[v] for v in t)) <= 0:
-            return False, f"tetrahedron {t} is not positively oriented"
-    faces: dict = {}
-    for t in T:
-        for k in range(4):
-            f = tuple(sorted(t[:k] + t[k + 1:]))
-            faces.setdefault(f, []).append(t[k])
-    for f, apexes in faces.items():
-        if len(apexes) > 2:
-            return False, f"face {f} is shared by {len(apexes)} tetrahedra"
-        if len(apexes) == 2:
-            s0, s1 = (orient(*(P[v] for v in f), P[a]) for a in apexes)
-            if s0 * s1 >= 0:
-                return False, f"the two tetrahedra on face {f} are on the same side"
-            a, b = apexes
-            t = f + (a,) if orient(*(P[v] for v in f), P[a]) > 0 else (f[0], f[2], f[1], a)
-            if insphere(*(P[v] for v in t), P[b]) > 0:
-                return False, f"face {f} is not locally Delaunay"
-        else:
-            a, b, c = (P[v] for v in f)
-            side = orient(a, b, c, P[apexes[0]])
-            if any(orient(a, b, c, P[q]) * side < 0 for q in distinct):
-                return False, f"boundary face {f} is not a convex hull facet"
-    used = {v for t in T for v in t}
-    if used != set(distinct):
-        return False, f"points {sorted(set(distinct) - used)[:5]} are not vertices"
-    total = sum(orient(*(P[v] for v in t)) for t in T)
-    volume6 = hull_volume6(P, points)
-    if total != volume6:
-        return False, f"tetrahedra volume {total} != hull volume {volume6} (x6)"
-    return True, "ok"
 
 
 def brute_force_empty(points, tets) -> bool:
@@ -200,6 +151,9 @@ def test_valid_on_degenerate_sets(name):
     if len(pts) <= 60:
         assert brute_force_empty(pts, d.simplices)
     assert d.stats["fallback_scans"] == 0
+    if len(d.simplices):   # an independent oracle for the tiling: total volume == Qhull's hull volume
+        P = int_points(pts)
+        assert sum(orient(*(P[v] for v in t)) for t in d.simplices) == hull_volume6(P, pts)
 
 
 def test_checker_rejects_broken_answers():
@@ -208,7 +162,9 @@ def test_checker_rejects_broken_answers():
     tets = Delaunay3D(pts).simplices
     assert check_delaunay_3d(pts, tets)[0]
     assert not check_delaunay_3d(pts, tets[1:])[0]                          # a hole
-    assert not check_delaunay_3d(pts, tets[:, [1, 0, 2, 3]])[0]             # wrong orientation
+    assert check_delaunay_3d(pts, tets[:, [1, 0, 2, 3]])[0]                 # either orientation is fine
+    flat = np.vstack([tets[1:], [[0, 1, 2, 2]]])
+    assert "flat" in check_delaunay_3d(pts, flat)[1]                         # a zero-volume tetrahedron
     assert not check_delaunay_3d(pts, np.vstack([tets, tets[:1]]))[0]       # an overlap
     five = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1], [0.875, 0.875, 0.875]])
     # point 4 is inside the sphere through 0..3: the Delaunay answer is the three tetrahedra

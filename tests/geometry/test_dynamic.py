@@ -204,7 +204,7 @@ def test_large_run_on_a_grid_matches_a_fresh_rebuild():
 
 
 def test_nearest_nodes_are_not_the_delaunay_neighbours():
-    # SPEC section 9, item 10: not "the nearest three nodes", and not a minimal network
+    # Delaunay neighbours are not "the nearest three nodes", and not a minimal network
     net = DynamicNetwork()
     for p in [(0, 0), (1, 0), (2, 0), (0, 5)]:
         net.join(*p)

@@ -8,8 +8,8 @@ every flip Lawson reports is legal and illegal-before-flip, and the exact
 checker ``reference_impl.verify.check_delaunay`` checks the final
 triangulation.  Starting triangulations: fans of convex polygons, the
 ``triangle`` package's constrained (non-Delaunay) output, and random legal flips
-applied to a Delaunay triangulation.  The max-min angle property (SPEC section
-9, item 9) is checked against *all* triangulations of small convex polygons with
+applied to a Delaunay triangulation.  The max-min angle property (which does not make
+triangles well shaped, whatever the original tutorial says) is checked against *all* triangulations of small convex polygons with
 an exact angle comparison (squared cosines as Fractions).
 """
 from __future__ import annotations
@@ -324,7 +324,7 @@ def test_random_flips_never_raise_the_minimum_angle(seed, n):
 
 
 def test_delaunay_is_not_well_shaped_on_thin_input():
-    """SPEC section 9, item 9: the best triangulation of thin input is still thin."""
+    """Delaunay maximises the minimum angle, yet the best triangulation of thin input is still thin."""
     t = np.linspace(0, np.pi, 30)
     pts = np.c_[np.cos(t) * 100, np.sin(t)]
     q = mesh_quality(pts, Delaunay(pts).simplices)

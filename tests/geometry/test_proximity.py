@@ -189,7 +189,7 @@ def test_degenerate_sets_against_brute_force(name, pts):
 
 @pytest.mark.parametrize("name,pts", ALL_SETS, ids=[s[0] for s in ALL_SETS])
 def test_subgraph_chain(name, pts):
-    """EMST ⊆ RNG ⊆ Gabriel ⊆ Delaunay edges (SPEC section 9, item 10)."""
+    """EMST ⊆ RNG ⊆ Gabriel ⊆ Delaunay edges (so the Delaunay graph is not a "minimal" network)."""
     T, R, G = edge_set(euclidean_mst(pts)), edge_set(relative_neighborhood_graph(pts)), edge_set(gabriel_graph(pts))
     D = edge_set(Delaunay(pts).edges()) if len(pts) else set()
     assert T <= R <= G <= D

@@ -1,6 +1,7 @@
 """Shared fixtures for the grader tests (run: .venv/bin/python -m pytest tests/grader -q)."""
 from __future__ import annotations
 
+import fcntl
 import hashlib
 import os
 from pathlib import Path
@@ -9,7 +10,7 @@ import pytest
 
 from grader.judge import Judge
 from grader.problems import Problem
-from grader.sandbox import UID_BASE, UID_COUNT
+from grader.sandbox import LOCK_DIR, Sandbox
 
 HERE = Path(__file__).resolve().parent
 REPO = HERE.parent.parent
@@ -22,17 +23,61 @@ def tiny_judge() -> Judge:
     return Judge(Problem.load(FIXTURE_PROBLEM))
 
 
+#: Sandbox uids this test process has used (recorded by the autouse fixture below).
+USED_UIDS: set[int] = set()
+
+
+@pytest.fixture(autouse=True, scope="session")
+def _record_sandbox_uids():
+    """Remember the uid of every sandbox this run enters, so leftovers are looked for only there."""
+    original = Sandbox.__enter__
+
+    def enter(self):
+        box = original(self)
+        if getattr(box, "uid", None) is not None:
+            USED_UIDS.add(box.uid)
+        return box
+
+    Sandbox.__enter__ = enter
+    yield
+    Sandbox.__enter__ = original
+
+
 def sandbox_processes() -> list[int]:
-    """PIDs of live processes owned by a sandbox uid (there should be none between judgings)."""
+    """PIDs of live processes of the sandbox uids this run used (there should be none between
+    judgings). Each uid is checked while holding its slot lock, so processes of another grader
+    on the same host, which may use the same uids, are never counted."""
+    pids = []
+    for uid in sorted(USED_UIDS):
+        try:
+            fd = os.open(LOCK_DIR / f"{uid}.lock", os.O_RDWR)
+        except OSError:
+            continue
+        try:
+            try:
+                fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+            except OSError:
+                continue  # another grader holds this slot now: what runs under it is not ours
+            pids += _processes_of(uid)
+        finally:
+            os.close(fd)
+    return pids
+
+
+def _processes_of(uid: int) -> list[int]:
+    """Live processes of ``uid``. Zombies are dead, not live: bubblewrap leaves its reaper to
+    the host's init to collect."""
     pids = []
     for d in os.listdir("/proc"):
         if d.isdigit():
             try:
                 with open(f"/proc/{d}/status") as f:
-                    uid = next(int(line.split()[1]) for line in f if line.startswith("Uid:"))
-            except (OSError, StopIteration):
+                    fields = dict(line.split(":", 1) for line in f if ":" in line)
+                real = int(fields["Uid"].split()[0])
+                zombie = fields["State"].split()[0] == "Z"
+            except (OSError, KeyError, ValueError, IndexError):
                 continue
-            if UID_BASE <= uid < UID_BASE + UID_COUNT:
+            if real == uid and not zombie:
                 pids.append(int(d))
     return pids
 

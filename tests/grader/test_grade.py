@@ -14,7 +14,7 @@ import time
 
 import pytest
 
-from grader.classgrade import grade_class
+from grader.classgrade import discover, grade_class
 
 from .conftest import HERE, REPO
 
@@ -89,3 +89,74 @@ def test_grade_on_dask_local_cluster(tmp_path, fixture_problems):
                           csv_path=tmp_path / "d.csv", progress=False)
     assert {s["student"]: s["verdict"] for s in out} == {"ada": "AC", "bob": "WA", "cy": "CE"}
     assert len(list(csv.DictReader(open(tmp_path / "d.csv")))) == 3
+
+
+def test_empty_folder_and_several_candidates(tmp_path, fixture_problems, capsys):
+    """An empty folder still gets a CSV row (score 0, "no submission"); with several candidate
+    files the note (in the CSV and on stderr) says which one was judged and why."""
+    root = tmp_path / "class"
+    (root / "eve").mkdir(parents=True)
+    (root / "eve" / "notes.txt").write_text("not code")
+    (root / "fay").mkdir()
+    (root / "fay" / "scratch.py").write_text("def delaunay(points):\n    return []\n")
+    (root / "fay" / f"{fixture_problems}.py").write_text(ACCEPTED)
+    os.utime(root / "fay" / "scratch.py")  # newer, but the file named after the problem wins
+    (root / "gus").mkdir()
+    (root / "gus" / "old.py").write_text("def delaunay(points):\n    return []\n")
+    (root / "gus" / "new.py").write_text(ACCEPTED)
+    os.utime(root / "gus" / "old.py", (1e9, 1e9))
+    out = grade_class(fixture_problems, root, tmp_path / "r.sqlite", csv_path=tmp_path / "g.csv",
+                      report_dir=tmp_path / "reports")
+    rows = {r["student"]: r for r in csv.DictReader(open(tmp_path / "g.csv"))}
+    assert list(rows) == ["eve", "fay", "gus"]
+    assert rows["eve"]["score"] == "0" and rows["eve"]["note"].startswith("no submission")
+    assert rows["fay"]["score"] == "100.0" and "named after the problem" in rows["fay"]["note"]
+    assert f"judged {fixture_problems}.py of 2 files" in rows["fay"]["note"]
+    assert rows["gus"]["file"].endswith("new.py") and "most recently modified" in rows["gus"]["note"]
+    err = capsys.readouterr().err
+    assert "eve: no submission" in err and "gus: judged new.py of 2 files" in err
+    assert "3 student folders: 2 to judge, 0 already graded, 1 without a submission" in err
+    assert {s["student"] for s in out} == {"eve", "fay", "gus"}
+    index = (tmp_path / "reports" / "index.html").read_text()
+    assert '<a href="fay.html">fay</a>' in index and '<a href="gus.html">gus</a>' in index
+    assert "eve</td><td>-</td><td>0</td><td>no submission" in index
+
+
+def test_progress_counts_tests_and_resumed_results(tmp_path, fixture_problems, capsys):
+    root = make_class(tmp_path / "class", n=2)
+    db = tmp_path / "p.sqlite"
+    from grader.store import ResultStore
+    from grader.verdicts import TestResult, Verdict
+
+    ada = next(j for j in discover(root, fixture_problems) if j.student == "ada")
+    store = ResultStore(db)  # as if a killed batch had stored ada's first test
+    store.begin("ada", fixture_problems, ada.path, ada.sha, ada.submitted_at)
+    store.add_test("ada", fixture_problems, ada.sha, TestResult("tiny/1-tutorial", "tiny", Verdict.AC, 0.01, 30.0))
+    store.close()
+    grade_class(fixture_problems, root, db, jobs=1)
+    err = capsys.readouterr().err
+    assert "1 test results resumed from the store" in err
+    assert "graded 2/2" in err and "tests 6/6, 1 resumed from the store" in err, err
+
+
+def test_live_progress_names_who_is_judged(tmp_path, fixture_problems):
+    """On a terminal the bar shows who is being judged and their tests done, while they run."""
+    import io
+
+    from grader.classgrade import Progress
+    from grader.store import ResultStore
+
+    class Tty(io.StringIO):
+        def isatty(self):
+            return True
+
+    store = ResultStore(tmp_path / "x.sqlite")
+    store.begin("ada", "p", "a.py", "s1", 0.0)
+    from grader.verdicts import TestResult, Verdict
+
+    for k in range(2):
+        store.add_test("ada", "p", "s1", TestResult(f"g/{k}", "g", Verdict.AC))
+    out = Tty()
+    bar = Progress(2, stream=out, tests_per_student=3)
+    bar.poll(store, "p", {"ada": "s1", "bob": "s2"}, set())
+    assert "judging ada 2/3" in out.getvalue() and "tests 2/6" in out.getvalue()

@@ -8,12 +8,16 @@ Run: .venv/bin/python -m pytest tests/grader/test_hostile.py -q
 """
 from __future__ import annotations
 
+import json
 import os
+import re
+import resource
 from pathlib import Path
 
 import pytest
 
-from grader.verdicts import Verdict
+from grader.store import ResultStore
+from grader.verdicts import Verdict, format_table
 
 from .conftest import HERE, sandbox_processes, tree_digest
 
@@ -53,6 +57,36 @@ def test_hostile_submission_gets_its_verdict(path: Path, tiny_judge, checkout_gu
     assert result.verdict == expected(path), [(t.name, str(t.verdict), t.message[:200]) for t in result.tests]
     assert sandbox_processes() == [], "processes of the sandbox uid survived the judging"
     assert os.getpid() > 0  # the grader is alive
+    assert result.judge_time_s < 180, "one hostile submission held the judge for minutes"
+    assert resource.getrusage(resource.RUSAGE_SELF).ru_maxrss < 3 << 20, "the grader grew over 3 GB"
+    shows_safely(result)
+
+
+CONTROL = re.compile(r"[\x00-\x09\x0b-\x1f\x7f-\x9f\ud800-\udfff]")
+
+
+def shows_safely(result) -> None:
+    """Whatever the submission said, the judge's outputs are valid UTF-8 without control characters
+    (no ANSI escapes; newlines only where the judge put them) and the store accepts them."""
+    table = format_table(result)
+    table.encode("utf-8")
+    assert not CONTROL.search(table), repr(CONTROL.search(table))
+    json.dumps(result.to_json(), ensure_ascii=False).encode("utf-8")
+    store = ResultStore(":memory:")
+    store.begin("student", result.problem, result.submission, "sha", 0.0)
+    for t in result.tests:
+        assert not CONTROL.search(t.message), repr(t.message[:200])
+        store.add_test("student", result.problem, "sha", t)
+    store.finish("student", result.problem, "sha", result)
+    assert store.is_done("student", result.problem, "sha")
+    store.close()
+
+
+def test_student_text_is_shown_escaped(tiny_judge):
+    r = tiny_judge.judge_path(HERE / "hostile" / "ansi_message.py")
+    assert "\\x1b[2J" in r.tests[0].message and "\\nsample/1  AC" in r.tests[0].message
+    r = tiny_judge.judge_path(HERE / "hostile" / "surrogate_message.py")
+    assert "\\ud800 broken \\udfff" in r.tests[0].message
 
 
 def test_messages_help_the_student(tiny_judge):

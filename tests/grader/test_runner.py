@@ -36,11 +36,73 @@ def test_worker_is_reused_and_measures_each_test():
 
 
 def test_worker_restarts_after_a_crash():
-    src = "import os\ndef f(crash):\n    if crash:\n        os._exit(3)\n    return os.getpid()\n"
+    # a per-process identity: in the bubblewrap jail (its own pid namespace) every worker is pid 2
+    src = "import os, time\nSTART = time.time_ns()\ndef f(crash):\n    if crash:\n        os._exit(3)\n    return START\n"
     with Sandbox(Limits()) as box:
         w = FunctionWorker(box, src, "f", forbidden=[])
         first = w.call([False], 1).value
         assert w.call([True], 1).status == "crash"
         again = w.call([False], 1)
         assert again.status == "ok" and again.value != first and w.starts == 2
+        w.stop()
+
+
+CHANNEL = """
+import json, os, time
+def _fd():
+    return json.loads(open("/proc/self/cmdline", "rb").read().split(b"\\0")[4])["ctl_out"]
+def f(kind):
+    fd = _fd()
+    if kind == "idless":
+        for _ in range(5000):
+            os.write(fd, b'{"x": 1}\\n')
+    elif kind == "wrong_id":
+        os.write(fd, b'{"id": 999, "ok": 1}\\n')
+    elif kind == "twice":
+        os.write(fd, json.dumps({"id": 1, "ok": 1}).encode() + b"\\n" + json.dumps({"id": 1, "ok": 2}).encode() + b"\\n")
+        time.sleep(5)
+    elif kind == "huge_line":
+        os.write(fd, b"[" * (3 << 20))
+        time.sleep(5)
+    return 0
+"""
+
+
+def test_control_channel_junk_ends_the_call_at_once():
+    with Sandbox(Limits(output_mb=1)) as box:
+        for kind, status in (("idless", "bad_type"), ("wrong_id", "bad_type"), ("huge_line", "output_limit")):
+            w = FunctionWorker(box, CHANNEL, "f", forbidden=[])
+            out = w.call([kind], time_limit=2)
+            assert out.status == status, (kind, out)
+            assert out.time_s < 2 and len(w.child.replies if w.child else []) <= 1
+            w.stop()
+        w = FunctionWorker(box, CHANNEL, "f", forbidden=[])
+        first = w.call(["twice"], time_limit=2)  # its own forged reply with the right id is its answer
+        assert first.status == "ok" and first.value == 1
+        second = w.call(["plain"], time_limit=2)  # the duplicate was junk: the next call is PE at once
+        assert second.status == "bad_type" and "judge's channel" in second.message
+        w.stop()
+
+
+def test_sleeping_is_stopped_early_and_spends_the_idle_budget():
+    src = "import time\ndef f(s):\n    time.sleep(s)\n    return s\n"
+    with Sandbox(Limits()) as box:
+        w = FunctionWorker(box, src, "f", forbidden=[])
+        nap = w.call([0.6], time_limit=1)
+        assert nap.status == "ok" and nap.idle_s >= 0.5  # the idle time is measured...
+        assert w.call([0.6], time_limit=1, idle_left=0.3).status == "timeout"  # ...and charged to the budget
+        assert w.call([0.1], time_limit=1, idle_left=0.0).status == "timeout"  # spent: TLE at once
+        slept = w.call([60], time_limit=1)  # idle cap 0.5 x 1 s + 1 s, far below the 20 s backstop
+        assert slept.status == "timeout" and "idle" in slept.message
+        w.stop()
+
+
+def test_busy_machine_is_not_idle_time():
+    """Waiting for a CPU (run queue, from schedstat) is not idleness: a CPU-bound call is never
+    stopped as idle, however loaded the machine (this one usually is)."""
+    src = "def f(n):\n    s = 0\n    for i in range(n):\n        s += i\n    return s\n"
+    with Sandbox(Limits()) as box:
+        w = FunctionWorker(box, src, "f", forbidden=[])
+        out = w.call([2_000_000], time_limit=5, idle_left=0.5)
+        assert out.status == "ok", out
         w.stop()

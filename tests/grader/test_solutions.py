@@ -8,11 +8,13 @@ import pytest
 
 from grader.judge import Judge
 from grader.kattis import expected_verdicts
+from grader.problems import list_problems
 from grader.verdicts import Verdict
 
 from .conftest import REPO
 
-CASES = [(p, f, v) for p in ("delaunay", "bowyer-watson-timed") for f, v in expected_verdicts(p).items()]
+PROBLEMS = [p.id for p in list_problems()]
+CASES = [(p, f, v) for p in PROBLEMS for f, v in expected_verdicts(p).items()]
 
 
 @pytest.fixture(scope="module")
@@ -25,16 +27,19 @@ def test_solution_verdict(problem, file, verdict, judges):
     # a failing solution stops at its first failure (as Kattis does): the verdict is the same
     key = (problem, verdict != "AC")
     judge = judges.setdefault(key, Judge(problem, stop_at_first_failure=verdict != "AC"))
-    result = judge.judge_path(REPO / "solutions" / problem / file)
+    result = judge.judge_path(REPO / "solutions" / problem / file, follow_links=True)
     assert result.verdict == verdict, [(t.name, str(t.verdict), t.message[:120]) for t in result.tests]
     assert Verdict.JE not in [t.verdict for t in result.tests]
     if verdict == "AC":
         assert result.score == result.max_score == 100
 
 
-def test_every_problem_has_accepted_wrong_and_slow():
-    for p in ("delaunay", "bowyer-watson-timed"):
-        assert {"AC", "WA", "TLE"} <= set(expected_verdicts(p).values())
+@pytest.mark.parametrize("problem", PROBLEMS)
+def test_every_problem_has_accepted_wrong_and_slow(problem):
+    expected = expected_verdicts(problem)
+    assert {"AC", "WA", "TLE"} <= set(expected.values()), expected
+    for name in expected:
+        assert (REPO / "solutions" / problem / name).exists(), name
 
 
 def test_accepted_delaunay_implements_bowyer_watson_itself():

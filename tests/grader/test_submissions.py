@@ -5,10 +5,12 @@ Run: .venv/bin/python -m pytest tests/grader/test_submissions.py -q
 from __future__ import annotations
 
 import json
+import os
 import subprocess
 import sys
 
 import nbformat
+import pytest
 
 from grader.report import render
 from grader.submissions import Submission
@@ -74,3 +76,38 @@ def test_cli_table_and_errors():
     assert "delaunay" in out.stdout and "bowyer-watson-timed" in out.stdout
     bad = subprocess.run([sys.executable, "-m", "grader", "judge", "nope", "x.py"], capture_output=True, text=True, cwd=REPO)
     assert bad.returncode == 2 and "error:" in bad.stderr
+
+
+def test_reader_refuses_links_special_and_oversize_files(tmp_path):
+    from grader.submissions import SubmissionError, read_submission_bytes
+
+    real = tmp_path / "real.py"
+    real.write_text("x = 1\n")
+    (tmp_path / "link.py").symlink_to(real)
+    os.mkfifo(tmp_path / "fifo.py")  # opening it must not block
+    with open(tmp_path / "sparse.py", "wb") as f:
+        f.truncate(2 << 30)
+    (tmp_path / "d").symlink_to(tmp_path)
+    cases = {"link.py": "symbolic link", "fifo.py": "not a regular file", "sparse.py": "larger than",
+             "d/real.py": "folder of real.py is a symbolic link", "missing.py": "cannot read"}
+    for name, expected in cases.items():
+        with pytest.raises(SubmissionError, match=expected):
+            read_submission_bytes(tmp_path / name)
+    assert read_submission_bytes(tmp_path / "link.py", follow_links=True) == b"x = 1\n"
+
+
+@pytest.mark.parametrize("text,expected", [
+    ("[" * 100_000 + "]" * 100_000, "nested too deeply"),
+    ('{"cells": [{"cell_type": "code", "source": [1, 2]}]}', "source is not text"),
+    ('{"cells": [{"cell_type": "code", "source": {"a": 1}}]}', "source is not text"),
+    ('{"cells": 5}', "no list of cells"),
+    ("not json at all", "not a valid notebook"),
+    ('{"cells": [{"cell_type": "code", "source": "x = \\"\\ud800\\""}], "x": "\\u001b[2J"}', None),
+])
+def test_malformed_notebooks_are_ce_not_tracebacks(tmp_path, tiny_judge, text, expected):
+    path = tmp_path / "nb.ipynb"
+    path.write_text(text, errors="surrogatepass")
+    result = tiny_judge.judge_path(path)
+    assert result.verdict in ("CE", "WA", "RE", "PE"), result.verdict
+    if expected:
+        assert result.verdict == "CE" and expected in result.tests[0].message

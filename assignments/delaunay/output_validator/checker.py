@@ -4,13 +4,15 @@ Two uses, one logic:
 
 * the grader imports this file and calls ``read_input``, ``from_result`` / ``read_output`` and
   ``check`` in its own process (answers never reach the student's side);
-* Kattis / problemtools run it as an output validator:
-  ``python3 checker.py input answer feedback_dir < team_output`` (exit 42 accept, 43 reject,
-  the reason in ``feedback_dir/judgemessage.txt``).
+* Kattis / problemtools run the exported copy (``python -m grader export-kattis delaunay OUT``) as an
+  output validator: ``python3 checker.py input answer feedback_dir < team_output`` (exit 42
+  accept, 43 reject, the reason in ``feedback_dir/judgemessage.txt``).
 
-The exact test itself is ``reference_impl.verify.check_delaunay`` (Python integers): embedded in
-this file by ``export-kattis``, else loaded by path from the checkout, without importing the rest
-of ``reference_impl`` (which would pull in numba).
+The exact test itself is ``reference_impl.verify.check_delaunay`` (Python integers), and the
+text formats and strict typing are ``reference_impl.judge_io``'s, both named in ``LIBRARY``: the
+shared loader (``grader/checker_runtime.py``) binds it without importing the rest
+of ``reference_impl`` (which would pull in numba), and ``export-kattis`` embeds it together with
+the Kattis entry point.
 
 Example:
     >>> check([[[0, 0], [1, 0], [0, 1]]], [[0, 1, 2]], None)
@@ -18,104 +20,57 @@ Example:
 """
 from __future__ import annotations
 
-import importlib.util
-import math
-import sys
-from pathlib import Path
+LIBRARY = ("judge_io", "verify")  # reference_impl/<name>.py, bound as globals by the shared loader
+
+PresentationError = judge_io.PresentationError  # noqa: F821 - bound by the loader
 
 
-class PresentationError(Exception):
-    """The output has the wrong shape or type (verdict PE), as opposed to a wrong triangulation."""
-
-
-def _load_verify():
-    embedded = globals().get("EMBEDDED_VERIFY_SOURCE")  # set by `python -m grader export-kattis`
-    if embedded:
-        module = type(sys)("_delaunay_verify")
-        exec(compile(embedded, "verify.py", "exec"), module.__dict__)
-        return module
-    here = Path(__file__).resolve().parent
-    candidates = [here / "verify.py"] + [p / "reference_impl" / "verify.py" for p in here.parents]
-    for path in candidates:
-        if path.is_file():
-            spec = importlib.util.spec_from_file_location("_delaunay_verify", path)
-            module = importlib.util.module_from_spec(spec)
-            spec.loader.exec_module(module)
-            return module
-    raise ImportError("reference_impl/verify.py not found next to the checker or in a parent directory")
-
-
-_verify = None
-
-
-def check_delaunay(points, triangles):
-    """``reference_impl.verify.check_delaunay``, loaded on first use (malformed output is
-    rejected without paying for numpy's import)."""
-    global _verify
-    if _verify is None:
-        _verify = _load_verify()
-    return _verify.check_delaunay(points, triangles)
+class WrongAnswer(Exception):
+    """The answer is wrong before any triangle is looked at (verdict WA): too many triangles."""
 
 
 def read_input(text: str) -> list:
     """Parse the input format into the entry function's argument list ``[points]``."""
-    tok = text.split()
-    n = int(tok[0])
-    return [[[float(tok[1 + 2 * i]), float(tok[2 + 2 * i])] for i in range(n)]]
+    return [judge_io.read_points(text)]  # noqa: F821
 
 
 def write_input(args: list) -> str:
-    (points,) = args
-    return f"{len(points)}\n" + "".join(f"{x!r} {y!r}\n" for x, y in points)
+    return judge_io.write_points(args[0])  # noqa: F821
 
 
 def write_output(triangles: list) -> str:
-    return f"{len(triangles)}\n" + "".join(f"{a} {b} {c}\n" for a, b, c in triangles)
+    return judge_io.write_index_rows(triangles)  # noqa: F821
 
 
-def _index(v, where: str) -> int:
-    if type(v) is int:
-        return v
-    if type(v) is float:
-        hint = " (not a number)" if math.isnan(v) else " (use integer indices: dtype=int)"
-        raise PresentationError(f"{where}: vertex index {v!r} is a float{hint}")
-    raise PresentationError(f"{where}: vertex index {v!r} is a {type(v).__name__}, not an int")
+def _limit(args) -> int:
+    """Any triangulation of n points has fewer than 2n triangles: more is rejected at once."""
+    return 2 * len(args[0]) + 8 if args else 1 << 62
+
+
+def _at_most(m: int, args) -> None:
+    """Reject over 2n triangles for n points before looking at any of them (WA), so a forged huge
+    answer costs nothing beyond reading it (bounded by the output limit). A triangulation has at
+    most 2n - 5; a count up to 2n gets the full check and its message."""
+    if args:
+        n = len(args[0])
+        if m > 2 * n:
+            raise WrongAnswer(f"{m} triangles for {n} points: a triangulation of n points has at most "
+                              f"2n - 5 triangles")
 
 
 def from_result(value, args: list) -> list[list[int]]:
     """Type-check what the entry function returned (JSON data): a list of [i, j, k] int triples."""
-    if not isinstance(value, list):
-        raise PresentationError(f"expected a list of triangles, got {type(value).__name__}: {str(value)[:60]}")
-    out = []
-    for k, t in enumerate(value):
-        if not isinstance(t, list) or len(t) != 3:
-            raise PresentationError(f"triangle {k} should be 3 vertex indices, got {str(t)[:60]}")
-        out.append([_index(v, f"triangle {k}") for v in t])
-    return out
+    if isinstance(value, list):
+        _at_most(len(value), args)
+    return judge_io.index_rows(value, 3, "triangle", _limit(args))  # noqa: F821
 
 
 def read_output(text: str, args: list) -> list[list[int]]:
     """Parse program output: m, then m lines 'i j k'."""
-    lines = text.split("\n")
-    if not lines or not lines[0].strip():
-        raise PresentationError("empty output: expected the number of triangles on the first line")
-    try:
-        m = int(lines[0].strip())
-    except ValueError:
-        raise PresentationError(f"first line should be the number of triangles, got {lines[0][:60]!r}") from None
-    body = [ln for ln in lines[1:] if ln.strip()]
-    if m < 0 or len(body) != m:
-        raise PresentationError(f"announced {m} triangles but {len(body)} lines follow")
-    out = []
-    for k, ln in enumerate(body):
-        parts = ln.split()
-        if len(parts) != 3:
-            raise PresentationError(f"line {k + 2}: expected 'i j k', got {ln[:60]!r}")
-        try:
-            out.append([int(p) for p in parts])
-        except ValueError:
-            raise PresentationError(f"line {k + 2}: indices must be integers, got {ln[:60]!r}") from None
-    return out
+    first = text.lstrip().split("\n", 1)[0].strip()
+    if first.isdigit():
+        _at_most(int(first), args)
+    return judge_io.read_index_rows(text, 3, "triangle", _limit(args))  # noqa: F821
 
 
 def check(args: list, triangles: list[list[int]], expected: list[list[int]] | None) -> tuple[bool, str]:
@@ -126,33 +81,10 @@ def check(args: list, triangles: list[list[int]], expected: list[list[int]] | No
         bad = [v for v in t if not 0 <= v < n]
         if bad:
             return False, f"triangle {k} = {t} uses index {bad[0]}, outside 0..{n - 1}"
-    ok, message = check_delaunay(points, triangles)
+    ok, message = verify.check_delaunay(points, triangles)
     if not ok and expected is not None and len(expected) != len(triangles):
         message += f" (a valid answer has {len(expected)} triangles, you gave {len(triangles)})"
     return ok, message
-
-
-def read_answer(text: str) -> list[list[int]]:
-    return read_output(text, [])
-
-
-def main(argv: list[str]) -> int:
-    input_path, answer_path, feedback_dir = argv[1], argv[2], argv[3]
-    try:
-        team = sys.stdin.buffer.read().decode("utf-8")
-        triangles = read_output(team, None)  # malformed output is rejected before any heavy work
-        args = read_input(Path(input_path).read_text())
-        ok, message = check(args, triangles, read_answer(Path(answer_path).read_text()))
-    except UnicodeDecodeError:
-        ok, message = False, "presentation error: the output is not UTF-8 text"
-    except PresentationError as exc:
-        ok, message = False, f"presentation error: {exc}"
-    Path(feedback_dir, "judgemessage.txt").write_text(message + "\n")
-    return 42 if ok else 43
-
-
-if __name__ == "__main__":
-    sys.exit(main(sys.argv))
 
 
 def draw(axes, args: list, received: list[list[int]], expected: list[list[int]] | None) -> None:

@@ -1,0 +1,1 @@
+../../../delaunay/input_validators/validate_points/validate_points.py

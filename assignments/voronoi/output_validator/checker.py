@@ -1,0 +1,234 @@
+"""Checker for `voronoi`: every received cell must be the site's Voronoi cell clipped to the box,
+within a stated tolerance (stdlib only).
+
+Two uses, one logic:
+
+* the grader imports this file and calls ``read_input``, ``from_result`` / ``read_output`` and
+  ``check`` in its own process (the reference cells never reach the student's side);
+* Kattis / problemtools run the exported copy (``python -m grader export-kattis voronoi OUT``) as an
+  output validator: ``python3 checker.py input answer feedback_dir < team_output`` (exit 42
+  accept, 43 reject, the reason in ``feedback_dir/judgemessage.txt``).
+
+What is checked, with eps = 1e-9 * D + 1e-14 * M (D the larger side of the box, M the largest
+absolute coordinate of the input): each cell is a convex counter-clockwise polygon; each of its
+vertices lies in the box and in the true cell (no other site is more than eps closer to it than
+its own site: the vertex is equidistant from the sites whose cells meet there); each corner of
+the true cell lies within eps of the received polygon; and the areas agree. Both inclusions
+together bound the distance between the two polygons by eps, so any vertex order, starting
+vertex, or extra vertices on an edge are accepted.
+
+Example:
+    >>> args = [[[0.0, 0.0], [2.0, 0.0]], [-1.0, -1.0, 3.0, 1.0]]
+    >>> ref = [[[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]], [[1.0, -1.0], [3.0, -1.0], [3.0, 1.0], [1.0, 1.0]]]
+    >>> check(args, ref, ref)
+    (True, 'ok')
+    >>> check(args, [ref[0], ref[0]], ref)[1][:40]
+    'cell 1: vertex (-1.0, -1.0) is not in th'
+"""
+from __future__ import annotations
+
+import math
+
+LIBRARY = ("judge_io",)  # reference_impl/judge_io.py (points format, PresentationError), bound by the loader
+
+REL_TOL = 1e-9    # times the larger side of the box
+ABS_TOL = 1e-14   # times the largest absolute coordinate
+
+PresentationError = judge_io.PresentationError  # noqa: F821 - bound by the loader
+
+
+def read_input(text: str) -> list:
+    """Parse the input format into the entry function's arguments ``[points, bbox]``."""
+    points = judge_io.read_points(text)  # noqa: F821
+    tok = text.split()
+    return [points, [float(t) for t in tok[1 + 2 * len(points):5 + 2 * len(points)]]]
+
+
+def write_input(args: list) -> str:
+    points, bbox = args
+    return judge_io.write_points(points) + " ".join(repr(float(v)) for v in bbox) + "\n"  # noqa: F821
+
+
+def write_output(cells: list) -> str:
+    return "".join(" ".join([str(len(c))] + [f"{float(x)!r} {float(y)!r}" for x, y in c]) + "\n" for c in cells)
+
+
+def max_vertices(n: int) -> tuple[int, int]:
+    """Bounds on a correct answer's size: vertices per cell, and in all (Voronoi: < 3n vertices,
+    each in at most 3 cells, plus the box corners and box crossings)."""
+    return n + 8, 10 * n + 16
+
+
+def _number(v, where: str) -> float:
+    if type(v) not in (int, float):
+        raise PresentationError(f"{where} should be a number, got {type(v).__name__}: {str(v)[:40]}")
+    if not math.isfinite(v):
+        raise PresentationError(f"{where} = {v!r} is not finite")
+    return float(v)
+
+
+def _cells(rows: list, n: int) -> list:
+    if len(rows) != n:
+        raise PresentationError(f"expected one cell per input point ({n}), got {len(rows)}")
+    per_cell, total = max_vertices(n)
+    if sum(len(c) for c in rows) > total:
+        raise PresentationError(f"{sum(len(c) for c in rows)} vertices in all: a correct answer has at most {total}")
+    out = []
+    for i, cell in enumerate(rows):
+        if len(cell) > per_cell:
+            raise PresentationError(f"cell {i} has {len(cell)} vertices: a correct one has at most {per_cell}")
+        out.append([[_number(x, f"cell {i}, vertex {k}, x"), _number(y, f"cell {i}, vertex {k}, y")]
+                    for k, (x, y) in enumerate(cell)])
+    return out
+
+
+def from_result(value, args: list) -> list:
+    """Type-check what ``voronoi_cells`` returned: one list of ``[x, y]`` pairs per input point."""
+    points = args[0]
+    if not isinstance(value, list):
+        raise PresentationError(f"expected a list of cells (polygons), got {type(value).__name__}: {str(value)[:60]}")
+    for i, cell in enumerate(value[:len(points) + 1]):
+        if not isinstance(cell, list) or not all(isinstance(p, list) and len(p) == 2 for p in cell[:len(points) + 9]):
+            raise PresentationError(f"cell {i} should be a list of [x, y] vertices, got {str(cell)[:60]}")
+    return _cells(value, len(points))
+
+
+def read_output(text: str, args: list) -> list:
+    """Parse program output: one line per input point, ``k x1 y1 ... xk yk``."""
+    n = len(args[0]) if args is not None else None
+    lines = [ln for ln in text.split("\n") if ln.strip()]
+    if n is not None and len(lines) != n:
+        raise PresentationError(f"expected one line per input point ({n}), got {len(lines)} lines")
+    per_cell = max_vertices(len(lines) if n is None else n)[0]
+    rows = []
+    for i, ln in enumerate(lines):
+        tok = ln.split()
+        if len(tok) > 1 + 2 * per_cell:   # bound the work before converting anything
+            raise PresentationError(f"line {i + 1}: {len(tok)} numbers, more than any correct cell needs")
+        try:
+            k = int(tok[0])
+            vals = [float(t) for t in tok[1:]]
+        except ValueError:
+            raise PresentationError(f"line {i + 1}: expected 'k x1 y1 ... xk yk', got {ln[:60]!r}") from None
+        if k < 0 or len(vals) != 2 * k:
+            raise PresentationError(f"line {i + 1}: announced {k} vertices but {len(vals)} numbers follow")
+        rows.append([[vals[2 * j], vals[2 * j + 1]] for j in range(k)])
+    return _cells(rows, len(rows) if n is None else n)
+
+
+def _area(poly: list) -> float:
+    """Signed area (shoelace formula around the first vertex: no cancellation far from 0)."""
+    ox, oy = poly[0]
+    return 0.5 * sum((x0 - ox) * (y1 - oy) - (x1 - ox) * (y0 - oy)
+                     for (x0, y0), (x1, y1) in zip(poly, poly[1:] + poly[:1]))
+
+
+def _outside(poly: list, q: list) -> float:
+    """How far q lies outside the polygon ``poly`` (0.0 inside or on it): a crossing test, then
+    the distance to the nearest edge. Robust to very short edges (a few ulps long), whose
+    direction is meaningless."""
+    x, y = q
+    inside = False
+    best = math.inf
+    for (ax, ay), (bx, by) in zip(poly, poly[1:] + poly[:1]):
+        if (ay > y) != (by > y) and x < ax + (y - ay) * (bx - ax) / (by - ay):
+            inside = not inside
+        dx, dy = bx - ax, by - ay
+        L = dx * dx + dy * dy
+        t = 0.0 if L == 0.0 else min(1.0, max(0.0, ((x - ax) * dx + (y - ay) * dy) / L))
+        best = min(best, math.hypot(x - ax - t * dx, y - ay - t * dy))
+    return 0.0 if inside else best
+
+
+def _merge_close(poly: list, eps: float) -> list:
+    """Drop each vertex within eps of the previous one kept (and of the first, cyclically)."""
+    out = []
+    for p in poly:
+        if not out or math.dist(p, out[-1]) > eps:
+            out.append(p)
+    while len(out) > 1 and math.dist(out[-1], out[0]) <= eps:
+        out.pop()
+    return out
+
+
+def _convexity_fault(poly: list, eps: float) -> str:
+    """'' for a convex counter-clockwise polygon (collinear and repeated vertices allowed)."""
+    pts = _merge_close(poly, eps)
+    if len(pts) < 3:
+        return f"it has {len(pts)} distinct vertices, not a polygon"
+    if _area(pts) <= 0.0:
+        return "it is not counter-clockwise (its signed area is not positive)"
+    turning = 0.0
+    for a, b, c in zip(pts, pts[1:] + pts[:1], pts[2:] + pts[:2]):
+        ux, uy, vx, vy = b[0] - a[0], b[1] - a[1], c[0] - b[0], c[1] - b[1]
+        cross = ux * vy - uy * vx
+        if cross < -eps * (math.hypot(ux, uy) + math.hypot(vx, vy)):
+            return "it turns clockwise at a vertex: not convex"
+        turning += math.atan2(cross, ux * vx + uy * vy)
+    if abs(turning - 2 * math.pi) > 1.0:
+        return "it winds around more than once"
+    return ""
+
+
+def check(args: list, cells: list, expected: list) -> tuple[bool, str]:
+    """Each cell against the reference cell (see the module docstring)."""
+    points, bbox = args
+    big = max([abs(c) for p in points for c in p] + [abs(v) for v in bbox])
+    k = math.frexp(big)[1] if big > 0 else 0
+
+    def s(v: float) -> float:                            # work at unit scale: no overflow at 1e300
+        try:
+            return math.ldexp(v, -k)
+        except OverflowError:
+            return math.copysign(math.inf, v)
+
+    def u(v: float) -> float:                            # back to the input's scale, for messages
+        return math.ldexp(v, k)
+
+    P = [[s(x), s(y)] for x, y in points]
+    x0, y0, x1, y1 = (s(v) for v in bbox)
+    eps = REL_TOL * max(x1 - x0, y1 - y0) + ABS_TOL * s(big)
+    for i, (cell, ref) in enumerate(zip(cells, expected)):
+        C = [[s(x), s(y)] for x, y in cell]
+        R = [[s(x), s(y)] for x, y in ref]
+        if not C or not R:
+            if (C and _area(C) > eps * eps) or (R and _area(R) > eps * eps):
+                return False, f"cell {i}: {len(cell)} vertices, but the true cell has {len(ref)}"
+            continue
+        fault = _convexity_fault(C, eps)
+        if fault:
+            return False, f"cell {i} of point {i} {points[i]}: {fault}"
+        for vx, vy in C:
+            if not (x0 - eps <= vx <= x1 + eps and y0 - eps <= vy <= y1 + eps):
+                return False, f"cell {i}: vertex ({u(vx)!r}, {u(vy)!r}) is outside the box {bbox}"
+            if _outside(R, [vx, vy]) > eps:
+                own = math.hypot(vx - P[i][0], vy - P[i][1])
+                j = min(range(len(P)), key=lambda m: math.hypot(vx - P[m][0], vy - P[m][1]))
+                near = math.hypot(vx - P[j][0], vy - P[j][1])
+                return False, (f"cell {i}: vertex ({u(vx)!r}, {u(vy)!r}) is not in the cell of point {i} "
+                               f"{points[i]}: it is {u(own):.6g} from it but {u(near):.6g} from point {j} {points[j]}")
+        for rx, ry in R:
+            if _outside(C, [rx, ry]) > eps:
+                return False, (f"cell {i} of point {i} {points[i]} is too small: it misses the corner "
+                               f"({u(rx)!r}, {u(ry)!r}) of the true cell")
+        a, b = _area(C), _area(R)
+        perimeter = sum(math.dist(p, q) for p, q in zip(R, R[1:] + R[:1]))
+        if abs(a - b) > 2 * eps * perimeter + eps * eps:
+            return False, f"cell {i}: area {u(u(a)):.9g}, but the true cell has area {u(u(b)):.9g}"
+    return True, "ok"
+
+
+def draw(axes, args: list, received: list, expected: list) -> None:
+    """Picture for reports: the box, the sites and the expected cells (left) and received ones
+    (right). ``axes`` is a pair of matplotlib Axes."""
+    points, (x0, y0, x1, y1) = args
+    for ax, cells, title, colour in ((axes[0], expected, "expected", "tab:blue"),
+                                     (axes[1], received, "received", "tab:red")):
+        ax.plot([x0, x1, x1, x0, x0], [y0, y0, y1, y1, y0], color="0.6", lw=0.8)
+        for cell in cells or []:
+            if cell:
+                cyc = cell + cell[:1]
+                ax.plot([p[0] for p in cyc], [p[1] for p in cyc], color=colour, lw=0.8)
+        ax.scatter([p[0] for p in points], [p[1] for p in points], s=10, color="black", zorder=3)
+        ax.set_title(f"{title}: {len(cells or [])} cells", fontsize=9)
+        ax.set_aspect("equal", adjustable="datalim")

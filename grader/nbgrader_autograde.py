@@ -1,0 +1,295 @@
+"""nbgrader autograding through the sandboxed judge: no student code runs in nbgrader's kernel.
+
+``assignments/nbgrader_config.py`` puts :class:`JudgeCells` in place of nbgrader's ``Execute``
+preprocessor. After nbgrader's own sanitising (outputs cleared, locked and test cells restored
+from the gradebook), ``JudgeCells`` writes the notebook to a private temporary file, judges it with
+:class:`grader.judge.Judge` exactly as ``python -m grader judge <id> <notebook>`` does (same code
+extraction, same sandbox, same tests), and writes each scored group's result into that group's test
+cell: a short stdout line when every test passed (full points), an error output with the verdict
+and message when not (zero). nbgrader's gradebook, ``generate_feedback`` and ``export`` then work
+unchanged. No kernel is started, so nothing a student writes can rewrite cells, monkeypatch the
+tests or reach ``gradebook.db``. Feedback never holds hidden inputs: scored groups show the verdict,
+time and the checker's message with floating-point numbers masked, never the test input.
+
+Results are kept per (student, problem, code) in ``judged.sqlite`` next to the gradebook, so the
+parallel path (:func:`grade_course`, ``python -m grader grade PROBLEM assignments/submitted
+--nbgrader --jobs N``) judges the class in a process pool first and nbgrader's autograde then only
+copies the results into the gradebook.
+
+Example:
+    nbgrader autograde delaunay                                  # in assignments/, venv bin/ on PATH
+    python -m grader grade delaunay assignments/submitted --nbgrader --jobs 2
+"""
+
+from __future__ import annotations
+
+import hashlib
+import os
+import re
+import subprocess
+import sys
+import tempfile
+from concurrent.futures import ProcessPoolExecutor, as_completed
+from datetime import datetime, timedelta, timezone
+from pathlib import Path
+
+import nbformat
+from nbgrader.plugins import LateSubmissionPlugin
+from nbgrader.preprocessors import NbGraderPreprocessor
+from traitlets import Unicode
+
+from .course_notebooks import CHECK_ID, group_cell_id
+from .sample_check import is_sample_group
+from .judge import Judge
+from .problems import Problem, load_problem
+from .store import ResultStore
+from .submissions import Submission, SubmissionError
+from .verdicts import DESCRIPTIONS, JudgeResult, TestResult, Verdict
+
+STORE_NAME = "judged.sqlite"
+_FLOAT = re.compile(r"(?<![\w.])[-+]?(?:\d+\.\d*|\.\d+|\d+(?=[eE]))(?:[eE][-+]?\d+)?|\b(?:inf|nan)\b")
+_problems: dict[str, Problem] = {}
+
+
+def mask_numbers(message: str) -> str:
+    """Hide floating-point literals (coordinates of a hidden input) in a checker message.
+
+    >>> mask_numbers("point 7 (0.25, -1e-300) is not a vertex of any triangle")
+    'point 7 (#, #) is not a vertex of any triangle'
+    """
+    return _FLOAT.sub("#", message)
+
+
+def _problem(problem_id: str) -> Problem:
+    if problem_id not in _problems:
+        _problems[problem_id] = load_problem(problem_id)
+    return _problems[problem_id]
+
+
+def code_key(problem: Problem, source: str) -> str:
+    """The store key of a piece of code for a problem (changes when the code or the tests change)."""
+    return hashlib.sha256(f"{problem.id}\0{problem.digest()}\0{source}".encode()).hexdigest()[:16]
+
+
+def judge_notebook_file(problem_id: str, path: Path, student: str, store_path: Path,
+                        hide: tuple[str, ...] = ()) -> JudgeResult:
+    """Judge one notebook file like ``python -m grader judge`` does, reusing stored results of the same code."""
+    problem = _problem(problem_id)
+    try:
+        code = Submission.from_path(path).source
+    except SubmissionError:  # the judge gives it CE; key it by its bytes
+        code = "\0raw\0" + hashlib.sha256(path.read_bytes()).hexdigest()
+    key = code_key(problem, code)
+    store = ResultStore(store_path)
+    try:
+        prior = store.prior(student, problem.id, key)
+        if store.is_done(student, problem.id, key) and len(prior) == len(problem.tests()):
+            return JudgeResult(problem.id, str(path), [prior[t.name] for t in problem.tests()], problem.group_points)
+        store.begin(student, problem.id, str(path), key, path.stat().st_mtime)
+        judge = Judge(problem, hide=[*hide, str(path.resolve().parent), str(store_path.resolve().parent)])
+        result = judge.judge_path(path, on_test=lambda r: store.add_test(student, problem.id, key, r), prior=prior)
+        store.finish(student, problem.id, key, result)
+        return result
+    finally:
+        store.close()
+
+
+def _line(t: TestResult, hidden: bool) -> str:
+    msg = (t.message.splitlines() or [""])[0][:300]
+    return f"{t.name:16} {str(t.verdict):3} {t.time_s:7.3f} s  {mask_numbers(msg) if hidden else msg}".rstrip()
+
+
+def group_output(result: JudgeResult, group: str, points: int) -> dict:
+    """The nbgrader output of a group's test cell: stdout when passed (full points), an error when not."""
+    tests = [t for t in result.tests if t.group == group]
+    lines = [_line(t, hidden=True) for t in tests]
+    if result.group_passed(group):
+        return nbformat.v4.new_output("stream", name="stdout",
+                                      text=f"group {group}: all {len(tests)} tests accepted, {points}/{points} points\n"
+                                           + "\n".join(lines) + "\n")
+    bad = next((t for t in tests if t.verdict not in (Verdict.AC, Verdict.SKIPPED)), None)
+    verdict = str(bad.verdict) if bad else "JE"
+    name = bad.name if bad else "(no tests)"
+    return nbformat.v4.new_output("error", ename=verdict,
+                                  evalue=f"group {group} failed at {name}: {DESCRIPTIONS.get(verdict, verdict)}; 0/{points} points",
+                                  traceback=[f"group {group}: 0/{points} points (hidden tests; inputs are not shown)", *lines])
+
+
+def write_results(nb: nbformat.NotebookNode, problem: Problem, result: JudgeResult) -> nbformat.NotebookNode:
+    """Put ``result`` into the notebook: each scored group's test cell, and the sample table in the check cell."""
+    by_cell = {group_cell_id(g.name): g for g in problem.groups if g.points > 0}
+    samples = [t for t in result.tests if any(is_sample_group(g) and g.name == t.group for g in problem.groups)]
+    for cell in nb.cells:
+        nbg = cell.get("metadata", {}).get("nbgrader", {})
+        if cell.get("cell_type") != "code":
+            continue
+        gid = nbg.get("grade_id")
+        if nbg.get("grade") and gid in by_cell:
+            g = by_cell[gid]
+            cell.outputs = [group_output(result, g.name, g.points)]
+            cell.execution_count = 1
+        elif gid == CHECK_ID:
+            text = "\n".join(_line(t, hidden=False) for t in samples)
+            cell.outputs = [nbformat.v4.new_output("stream", name="stdout",
+                                                   text=f"samples, as judged at grading time:\n{text}\n")]
+    return nb
+
+
+class JudgeCells(NbGraderPreprocessor):
+    """Autograde preprocessor: judge the (sanitised) notebook in the sandbox, write the verdicts into
+    the test cells. Replaces nbgrader's ``Execute`` in ``c.Autograde.autograde_preprocessors``."""
+
+    store = Unicode("", help="results store (default: judged.sqlite next to the gradebook)").tag(config=True)
+
+    def _store_path(self, resources: dict) -> Path:
+        if self.store:
+            return Path(self.store)
+        url = resources["nbgrader"].get("db_url", "")
+        if url.startswith("sqlite:///"):
+            return Path(url[len("sqlite:///"):]).parent / STORE_NAME
+        return Path.cwd() / STORE_NAME
+
+    def preprocess(self, nb, resources):
+        info = resources["nbgrader"]
+        problem = _problem(info["notebook"])
+        store_path = self._store_path(resources)
+        with tempfile.TemporaryDirectory(prefix="nbgrader-judge-") as tmp:
+            path = Path(tmp) / f"{problem.id}.ipynb"
+            nbformat.write(nb, str(path))
+            result = judge_notebook_file(problem.id, path, info["student"], store_path,
+                                         hide=(str(store_path.resolve().parent),))
+        self.log.info("%s / %s: %s, %s/%s", info["student"], problem.id, result.verdict, result.score, result.max_score)
+        return write_results(nb, problem, result), resources
+
+
+def late_factor(problem_id: str, seconds_late: float) -> tuple[float, str]:
+    """Score multiplier of a submission ``seconds_late`` after the due date, from ``course.yaml`` ``timed``.
+
+    >>> late_factor("bowyer-watson-timed", 30)     # within the grace period
+    (1.0, 'on time')
+    >>> late_factor("bowyer-watson-timed", 600)
+    (0.5, 'late: score x0.5')
+    """
+    from .timed import _settings
+
+    problem = _problem(problem_id)
+    if not problem.timed or seconds_late <= 0:
+        return 1.0, "on time"
+    t = _settings(problem_id)
+    if seconds_late <= float(t["grace_s"]):
+        return 1.0, "on time"
+    if t["late_policy"] == "reject":
+        return 0.0, "late: rejected"
+    if t["late_policy"] == "multiplier":
+        return float(t["late_multiplier"]), f"late: score x{t['late_multiplier']}"
+    return 1.0, "late (accepted)"
+
+
+class CourseLatePolicy(LateSubmissionPlugin):
+    """nbgrader late-submission plugin: a timed problem's policy from its ``course.yaml``; other
+    assignments fall back to nbgrader's ``penalty_method``."""
+
+    def late_submission_penalty(self, student_id, score, total_seconds_late):
+        assignment = getattr(self.parent, "assignment_id", "")
+        try:
+            timed = bool(_problem(assignment).timed)
+        except ValueError:
+            timed = False
+        if not timed:
+            return super().late_submission_penalty(student_id, score, total_seconds_late)
+        factor, note = late_factor(assignment, total_seconds_late)
+        self.log.info("%s: %s (%s s)", student_id, note, total_seconds_late)
+        return score * (1.0 - factor)
+
+
+def set_exam_deadline(course_root: Path, problem_id: str, start: datetime) -> datetime:
+    """Create/update the nbgrader assignment of a timed problem with due date = start + its duration."""
+    from nbgrader.api import Gradebook
+
+    from .timed import _settings
+
+    if not _problem(problem_id).timed:
+        raise ValueError(f"problem {problem_id!r} is not timed (no 'timed' section in its course.yaml)")
+    if start.tzinfo is None:
+        start = start.replace(tzinfo=timezone.utc)
+    due = start + timedelta(minutes=float(_settings(problem_id)["duration_min"]))
+    with Gradebook(f"sqlite:///{Path(course_root).resolve() / 'gradebook.db'}") as gb:
+        gb.update_or_create_assignment(problem_id, duedate=due.astimezone(timezone.utc).replace(tzinfo=None))
+    return due
+
+
+def nbgrader_env() -> dict:
+    """The environment for nbgrader commands: the venv's ``bin/`` first on PATH (nbgrader calls ``alembic``)."""
+    env = dict(os.environ)
+    env["PATH"] = str(Path(sys.executable).parent) + os.pathsep + env.get("PATH", "")
+    return env
+
+
+def run_nbgrader(course_root: Path, *args: str, check: bool = True) -> subprocess.CompletedProcess:
+    """``nbgrader ARGS`` in ``course_root`` with :func:`nbgrader_env`."""
+    cmd = [str(Path(sys.executable).parent / "nbgrader"), *args]
+    r = subprocess.run(cmd, cwd=course_root, env=nbgrader_env(), capture_output=True, text=True)
+    if check and r.returncode != 0:
+        raise RuntimeError(f"{' '.join(cmd[1:])} failed ({r.returncode}):\n{r.stderr[-3000:]}")
+    return r
+
+
+def _collected(submitted: Path, problem_id: str) -> list[tuple[str, Path]]:
+    return [(d.name, d / problem_id / f"{problem_id}.ipynb") for d in sorted(submitted.iterdir())
+            if (d / problem_id / f"{problem_id}.ipynb").is_file()]
+
+
+def _judge_job(problem_id: str, student: str, path: str, store_path: str, hide: tuple[str, ...]) -> dict:
+    r = judge_notebook_file(problem_id, Path(path), student, Path(store_path), hide)
+    return {"student": student, "verdict": r.verdict, "score": r.score, "max_score": r.max_score}
+
+
+def grade_course(problem_id: str, submitted: str | Path, jobs: int = 1, autograde: bool = True) -> list[dict]:
+    """Judge every collected notebook ``submitted/<student>/<id>/<id>.ipynb`` in a pool of ``jobs``
+    processes, then run ``nbgrader autograde`` (which finds the results stored and writes the same
+    gradebook entries, autograded notebooks and late penalties as a one-by-one run)."""
+    submitted = Path(submitted).resolve()
+    course_root = submitted.parent
+    if not submitted.is_dir():
+        raise ValueError(f"{submitted} is not a directory (expected nbgrader's submitted/<student>/{problem_id}/)")
+    problem = _problem(problem_id)
+    problem.tests()  # materialise the hidden tests once, before the workers start
+    store_path = course_root / STORE_NAME
+    ResultStore(store_path).close()
+    hide = (str(submitted), str(course_root))
+    out = []
+    with ProcessPoolExecutor(max_workers=max(1, jobs)) as pool:
+        futures = {pool.submit(_judge_job, problem_id, s, str(p), str(store_path), hide): s
+                   for s, p in _collected(submitted, problem_id)}
+        for fut in as_completed(futures):
+            try:
+                out.append(fut.result())
+            except Exception as exc:  # noqa: BLE001 - a judge fault; nbgrader autograde judges it again
+                out.append({"student": futures[fut], "verdict": "JE", "error": f"{type(exc).__name__}: {exc}"})
+    if autograde:
+        run_nbgrader(course_root, "autograde", problem_id, "--force")
+    return sorted(out, key=lambda s: s["student"])
+
+
+def main(argv: list[str] | None = None) -> int:
+    """``python -m grader.nbgrader_autograde deadline PROBLEM START`` (ISO time, UTC if no zone)."""
+    import argparse
+
+    ap = argparse.ArgumentParser(prog="python -m grader.nbgrader_autograde")
+    sub = ap.add_subparsers(dest="command", required=True)
+    p = sub.add_parser("deadline", help="set a timed assignment's due date to START + its duration")
+    p.add_argument("problem")
+    p.add_argument("start", help="exam start, ISO 8601 (e.g. 2026-12-01T09:00:00+00:00)")
+    p.add_argument("--course", default=str(Path(__file__).resolve().parent.parent / "assignments"))
+    a = ap.parse_args(argv)
+    try:
+        due = set_exam_deadline(Path(a.course), a.problem, datetime.fromisoformat(a.start))
+    except ValueError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    print(f"{a.problem}: due {due.isoformat()}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,206 @@
+"""The jail itself: the allow-list view, whole-sandbox accounting, seccomp, forbidden engines in
+every installed copy, allowed libraries working, and the fallback jail (``GRADER_JAIL=namespaces``).
+
+Run: .venv/bin/python -m pytest tests/grader/test_sandbox.py -q
+"""
+from __future__ import annotations
+
+import ctypes
+import json
+import os
+import shutil
+import threading
+from pathlib import Path
+
+import pytest
+
+from grader import cgroups, engines, seccomp
+from grader.runner import FunctionWorker
+from grader.sandbox import JAIL_ENV, Limits, Sandbox, bwrap_path, is_root, jail_kind
+from grader.verdicts import Verdict
+
+from .conftest import HERE
+
+HOSTILE = HERE / "hostile"
+root_only = pytest.mark.skipif(not is_root(), reason="the jail (uid drop, namespaces, cgroups) needs root")
+JAILS = ["bwrap", "namespaces"]
+
+
+def _jail(monkeypatch, kind: str) -> None:
+    if kind == "bwrap" and (bwrap_path() is None or jail_kind() != "bwrap"):
+        pytest.skip("bubblewrap is not installed or cannot create a user namespace here")
+    monkeypatch.setenv(JAIL_ENV, kind)
+
+
+@pytest.fixture
+def other_checkout():
+    """A second copy of the course elsewhere on the machine, readable by everyone (like a real
+    checkout), at the path tests/grader/hostile/read_other_checkout.py tries."""
+    top = Path("/srv/hostile-course-copy")
+    if not top.parent.is_dir():
+        pytest.skip(f"no {top.parent} on this machine")
+    target = top / "course" / "solutions" / "delaunay" / "accepted_walk.py"
+    target.parent.mkdir(parents=True, exist_ok=True)
+    target.write_text("# the staff solution\n")
+    for p in [top, *top.rglob("*")]:
+        os.chmod(p, 0o755 if p.is_dir() else 0o644)
+    yield target
+    shutil.rmtree(top, ignore_errors=True)
+
+
+@root_only
+@pytest.mark.parametrize("kind", JAILS)
+def test_another_checkout_on_the_machine_is_not_visible(kind, monkeypatch, tiny_judge, other_checkout):
+    _jail(monkeypatch, kind)
+    r = tiny_judge.judge_path(HOSTILE / "read_other_checkout.py")
+    assert r.verdict == "WA", [(t.verdict.value, t.message[:200]) for t in r.tests]
+
+
+@root_only
+@pytest.mark.parametrize("kind", JAILS)
+@pytest.mark.parametrize("name", ["run_lock_write", "setuid_binaries", "seccomp_denied", "fork_helpers_memory",
+                                  "look_for_answers_ctypes", "mpl_qhull_import", "qhull_by_path_base"])
+def test_kernel_side_holes_are_closed_in_both_jails(kind, name, monkeypatch, tiny_judge):
+    _jail(monkeypatch, kind)
+    path = HOSTILE / f"{name}.py"
+    expect = path.read_text().splitlines()[0].split(":", 1)[1].strip()
+    r = tiny_judge.judge_path(path)
+    assert r.verdict == expect, [(t.verdict.value, t.message[:200]) for t in r.tests]
+
+
+@root_only
+def test_the_json_output_says_which_jail_ran(tiny_judge):
+    r = tiny_judge.judge_path(HOSTILE / "wrong_type.py")
+    mech = r.to_json()["sandbox"]
+    assert mech.split("+")[0] == jail_kind()
+    assert "seccomp" in mech or seccomp.program() is None
+
+
+def _notebook(source: str) -> dict:
+    cells = [{"cell_type": "markdown", "metadata": {}, "source": ["# My Delaunay\n"]}]
+    cells += [{"cell_type": "code", "metadata": {}, "execution_count": None, "outputs": [],
+               "source": source.splitlines(True)}]
+    cells += [{"cell_type": "code", "metadata": {}, "execution_count": None, "outputs": [],
+               "source": ["plt.show()\n"]}]
+    return {"cells": cells, "metadata": {}, "nbformat": 4, "nbformat_minor": 5}
+
+
+def test_a_notebook_that_plots_with_pyplot_is_accepted(tiny_judge, tmp_path):
+    nb = tmp_path / "delaunay.ipynb"
+    nb.write_text(json.dumps(_notebook((HOSTILE / "pyplot_plots.py").read_text())))
+    r = tiny_judge.judge_path(nb)
+    assert r.verdict == "AC", [(t.verdict.value, t.message[:300]) for t in r.tests]
+
+
+def test_pyplot_works_without_root_too(monkeypatch, tiny_judge):
+    """The not-root path (a student checking their own code): no jail, but the same pre-built
+    font cache, so matplotlib does not run fc-list (a forbidden subprocess)."""
+    import grader.sandbox as sandbox
+    monkeypatch.setattr(sandbox, "is_root", lambda: False)
+    r = tiny_judge.judge_path(HOSTILE / "pyplot_plots.py")
+    assert r.verdict == "AC", [(t.verdict.value, t.message[:300]) for t in r.tests]
+    assert r.to_json()["sandbox"] == "rlimits"
+
+
+def test_allowed_libraries_import_and_work_where_their_neighbours_are_forbidden(tiny_judge):
+    src = ("import matplotlib.pyplot as plt, numpy as np, scipy.optimize, scipy.linalg\n"
+           "def f(xs):\n    fig, ax = plt.subplots()\n    ax.plot(xs, xs)\n    fig.savefig('p.png')\n"
+           "    m = scipy.optimize.minimize_scalar(lambda t: (t - 2.0) ** 2).x\n"
+           "    return [round(float(m), 6), float(np.linalg.det(scipy.linalg.inv(np.eye(2) * 2)))]\n")
+    forbidden = list(tiny_judge.problem.forbidden)
+    with Sandbox(tiny_judge.limits, cover=tiny_judge.cover) as box:
+        # loading these takes about 2 CPU-seconds: a generous load timeout for a busy machine
+        w = FunctionWorker(box, src, "f", forbidden=forbidden, load_timeout=300)
+        out = w.call([[0.0, 1.0]], 30)
+        w.stop()
+    assert (out.status, out.value) == ("ok", [2.0, 0.25]), out
+
+
+def test_a_library_using_the_engine_for_the_student_is_a_violation_naming_the_line(tiny_judge, tmp_path):
+    sub = tmp_path / "s.py"
+    sub.write_text("import matplotlib.pyplot as plt\n\ndef delaunay(points):\n"
+                   "    xs, ys = zip(*points)\n    return plt.triplot(xs, ys)\n")
+    r = tiny_judge.judge_path(sub)
+    t = r.tests[0]
+    assert t.verdict == Verdict.SV, t.message
+    assert "Qhull" in t.message and "line 5 of your code" in t.message and "plt.triplot" in t.message
+    sub.write_text("import matplotlib.tri as tri\n\ndef delaunay(points):\n    return []\n")
+    t = tiny_judge.judge_path(sub).tests[0]
+    assert t.verdict == Verdict.SV and "matplotlib.tri" in t.message and "line 1" in t.message
+
+
+@root_only
+@pytest.mark.parametrize("accounting", ["best", "proc-uid"])
+def test_cpu_of_forked_helpers_is_charged(accounting, monkeypatch):
+    if accounting == "proc-uid":  # the fallback where no cgroup is writable
+        monkeypatch.setattr(cgroups, "open_group", lambda name, memory_mb, processes, uid:
+                            cgroups._ProcUid(uid, memory_mb))
+    src = ("import ctypes, os\nlibc = ctypes.CDLL(None)\n"
+           "def f(n):\n    if libc.fork() == 0:\n        x = 0\n        for i in range(n):\n            x += i\n"
+           "        os._exit(0)\n    libc.wait(None)\n    return 0\n")
+    with Sandbox(Limits(cpu_s=30, memory_mb=256)) as box:
+        mechanism = box.group.mechanism
+        w = FunctionWorker(box, src, "f", forbidden=[])
+        out = w.call([3_000_000], 30)
+        w.stop()
+    assert out.status == "ok"
+    assert accounting != "proc-uid" or mechanism == "proc-uid"
+    # a few million interpreted additions cost well over 0.05 CPU-seconds on any machine; the
+    # worker itself only waited (charging the worker alone gave about 0.001 s)
+    assert out.time_s > 0.05, out
+
+
+@root_only
+def test_memory_of_forked_helpers_is_charged_without_cgroups_too(monkeypatch, tiny_judge):
+    monkeypatch.setattr(cgroups, "open_group", lambda name, memory_mb, processes, uid:
+                        cgroups._ProcUid(uid, memory_mb))
+    r = tiny_judge.judge_path(HOSTILE / "fork_helpers_memory.py")
+    assert r.verdict == "MLE", [(t.verdict.value, t.memory_mb, t.message[:200]) for t in r.tests]
+
+
+def test_seccomp_filter_denies_namespaces_and_ptrace_but_not_fork_or_threads():
+    prog = seccomp.program()
+    if prog is None:
+        pytest.skip("seccomp filter only for x86-64")
+    r, w = os.pipe()
+    pid = os.fork()
+    if pid == 0:  # pragma: no cover - child
+        try:
+            seccomp.install(prog)
+            libc = ctypes.CDLL(None, use_errno=True)
+            res = [libc.unshare(0x10000000), ctypes.get_errno(), libc.ptrace(0, 0, None, None), ctypes.get_errno()]
+            t = threading.Thread(target=lambda: res.append("thread"))
+            t.start()
+            t.join()
+            q = os.fork()
+            if q == 0:
+                os._exit(7)
+            res.append(os.waitstatus_to_exitcode(os.waitpid(q, 0)[1]))
+            os.write(w, json.dumps(res).encode())
+        finally:
+            os._exit(0)
+    os.close(w)
+    data = os.read(r, 1000)
+    os.waitpid(pid, 0)
+    import errno
+    assert json.loads(data) == [-1, errno.EPERM, -1, errno.EPERM, "thread", 7]
+
+
+def test_engines_are_covered_in_every_copy_and_under_every_name(tmp_path, monkeypatch):
+    venv, base = tmp_path / "venv", tmp_path / "base"
+    files = [venv / "scipy/spatial/_qhull.cpython-311-x86_64-linux-gnu.so", venv / "scipy/spatial/_kdtree.py",
+             venv / "matplotlib/_qhull.cpython-311-x86_64-linux-gnu.so", venv / "matplotlib/tri/__init__.py",
+             base / "scipy/spatial/_qhull.cpython-311-x86_64-linux-gnu.so", base / "triangle/__init__.py",
+             venv / "shapely.libs/libgeos-1234.so.3", venv / "shapely/__init__.py"]
+    for f in files:
+        f.parent.mkdir(parents=True, exist_ok=True)
+        f.write_text("")
+    monkeypatch.setattr(engines, "site_dirs", lambda: [str(venv), str(base)])
+    monkeypatch.setattr(engines, "_LIB_DIRS", ())
+    covered = set(engines.cover_paths(["scipy.spatial", "matplotlib.tri", "triangle", "shapely"]))
+    assert covered == {str(files[0]), str(files[2]), str(files[4]), str(base / "triangle"), str(files[6]),
+                       str(venv / "shapely")}
+    # pyplot imports matplotlib.tri and scipy.optimize imports scipy.spatial: both stay readable
+    assert not any("tri" in p.split("/")[-1] and "matplotlib" in p for p in covered if p.endswith("tri"))
+    assert str(venv / "scipy/spatial") not in covered
+    assert engines.modules_of([str(files[0])]) == ["scipy.spatial._qhull"]

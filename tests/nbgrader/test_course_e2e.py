@@ -1,0 +1,147 @@
+"""End to end: the nbgrader course with a fake class of eleven students on the timed exam.
+
+generate_assignment -> release to a local exchange -> submissions (right, wrong, slow, hostile,
+missing, late, and five forgeries) -> collect -> autograde -> generate_feedback -> export; then
+the same class in a second course copy through the parallel path (``python -m grader grade
+--nbgrader``). Checks: every gradebook score equals ``python -m grader judge``'s on the autograded
+notebook (times the late policy), forgeries score what their wrong code scores, nobody's manual
+score is set, no feedback file holds a hidden test input, and both paths write the same gradebook.
+
+Run: .venv/bin/python -m pytest tests/nbgrader/test_course_e2e.py -x -q   (a few minutes; root)
+"""
+
+from __future__ import annotations
+
+import csv
+import os
+import re
+import shutil
+import time
+from datetime import datetime, timedelta, timezone
+
+import pytest
+
+from fake_class import add_roster, gradebook_scores, judge_json, make_course, students, submit_class
+from grader.cli import main as grader_main
+from grader.nbgrader_autograde import late_factor, set_exam_deadline
+from grader.problems import load_problem
+
+PROBLEM = "bowyer-watson-timed"
+pytestmark = [pytest.mark.slow, pytest.mark.xdist_group("nbgrader-e2e"),  # one worker builds the class once
+              pytest.mark.skipif(os.geteuid() != 0, reason="grading a class needs root (the sandbox drops to an unprivileged uid)")]
+
+
+@pytest.fixture(scope="module")
+def graded(tmp_path_factory):
+    tmp = tmp_path_factory.mktemp("nbcourse")
+    course = make_course(tmp, PROBLEM)
+    add_roster(course.root, [s.name for s in students()])
+    start = datetime.now(timezone.utc) - timedelta(minutes=25)
+    due = set_exam_deadline(course.root, PROBLEM, start)
+    submit_class(course, PROBLEM, students(), due)
+    course.nbgrader("collect", PROBLEM)
+    twin = tmp / "twin"
+    shutil.copytree(course.root, twin)  # the same class, for the parallel path
+    t0 = time.perf_counter()
+    course.nbgrader("autograde", PROBLEM)
+    t1 = time.perf_counter()
+    assert grader_main(["grade", PROBLEM, str(twin / "submitted"), "--nbgrader", "--jobs", "2"]) == 0
+    t2 = time.perf_counter()
+    print(f"autograde one by one {t1 - t0:.1f} s, grade --nbgrader --jobs 2 {t2 - t1:.1f} s")  # shown with -s
+    course.nbgrader("generate_feedback", PROBLEM)
+    course.nbgrader("export", "--to", str(tmp / "grades.csv"))
+    return course, twin, tmp
+
+
+def _expected(course) -> dict[str, float]:
+    """Per student: the judge's score of the autograded notebook times the late policy."""
+    out = {}
+    for d in sorted((course.root / "submitted").iterdir()):
+        nb = course.root / "autograded" / d.name / PROBLEM / f"{PROBLEM}.ipynb"
+        if not nb.is_file():
+            out[d.name] = 0.0
+            continue
+        factor = late_factor(PROBLEM, 1200)[0] if d.name == "late" else 1.0  # submitted 20 min late
+        out[d.name] = judge_json(PROBLEM, nb)["score"] * factor
+        out[d.name + ":submitted"] = judge_json(PROBLEM, d / PROBLEM / f"{PROBLEM}.ipynb")["score"] * factor
+    return out
+
+
+def test_scores_equal_the_judge(graded):
+    course, _, _ = graded
+    got = gradebook_scores(course.root, PROBLEM)
+    expected = _expected(course)
+    assert set(got) == {s.name for s in students()}
+    for student, g in got.items():
+        assert g["score"] == pytest.approx(expected[student]), (student, g, expected[student])
+        if student != "missing":  # the code as submitted scores the same (edited test cells hold no code)
+            assert expected[student + ":submitted"] == expected[student]
+        assert g["manual"] == [], f"{student}: a manual score appeared: {g['manual']}"
+    # what each kind of student gets (the judge decides; these pin the class composition)
+    assert got["right"]["score"] == 100
+    assert got["late"]["raw"] == 100 and got["late"]["score"] == 50 == 100 * late_factor(PROBLEM, 1200)[0]
+    assert 0 < got["slow"]["score"] < 100  # correct on the small groups, TLE on the largest
+    for s in ("wrong", "hostile", "missing", "transformer", "monkeypatch", "gradebook", "traceback", "edited"):
+        assert got[s]["score"] == 0, (s, got[s])
+    # the test cells edited in the submitted copy were restored before judging
+    assert expected["edited:submitted"] == expected["edited"] == 0
+
+
+def test_forgeries_get_their_verdicts(graded):
+    course, _, _ = graded
+    verdicts = {}
+    for s in ("transformer", "monkeypatch", "gradebook", "traceback", "hostile"):
+        nb = course.root / "autograded" / s / PROBLEM / f"{PROBLEM}.ipynb"
+        verdicts[s] = judge_json(PROBLEM, nb)["verdict"]
+    assert verdicts == {"transformer": "WA", "monkeypatch": "SV", "gradebook": "SV", "traceback": "RE", "hostile": "SV"}
+
+
+def test_export_and_parallel_gradebook_agree(graded):
+    course, twin, tmp = graded
+    with open(tmp / "grades.csv") as f:
+        exported = {r["student_id"]: float(r["score"]) for r in csv.DictReader(f)}
+    one_by_one = gradebook_scores(course.root, PROBLEM)
+    parallel = gradebook_scores(twin, PROBLEM)
+    assert exported == {s: g["score"] for s, g in one_by_one.items()}
+    assert parallel == one_by_one
+
+
+def _hidden_tokens() -> set[str]:
+    """Distinctive numbers of every hidden test input (coordinates as the input text writes them)."""
+    tokens = set()
+    for t in load_problem(PROBLEM).tests():
+        if t.group == "sample":
+            continue
+        for tok in re.findall(r"[-+0-9.eE]+", t.input_text):
+            if len(tok.strip("-+")) >= 6:
+                tokens.add(tok)
+    return tokens
+
+
+def test_feedback_shows_verdicts_not_hidden_inputs(graded):
+    course, _, _ = graded
+    files = sorted((course.root / "feedback").rglob("*.html"))
+    assert {f.parts[-3] for f in files} == {s.name for s in students() if s.code is not None}
+    tokens = _hidden_tokens()
+    assert len(tokens) > 100
+    for f in files:
+        text = f.read_text()
+        leaked = [t for t in tokens if t in text]
+        assert not leaked, f"{f}: hidden input numbers {leaked[:5]}"
+    wrong = (course.root / "feedback" / "wrong" / PROBLEM / f"{PROBLEM}.html").read_text()
+    assert "group tiny" in wrong and "WA" in wrong
+    right = (course.root / "feedback" / "right" / PROBLEM / f"{PROBLEM}.html").read_text()
+    tiny = next(g for g in load_problem(PROBLEM).groups if g.name == "tiny")
+    assert f"group tiny: all {len(tiny.cases)} tests accepted" in right
+
+
+def test_student_edition_releases_what_nbgrader_releases(graded):
+    """The student edition's notebooks are nbgrader's own release (same cells, stubs, checksums)."""
+    import nbformat
+
+    from grader.student_edition import release_notebook
+
+    course, _, _ = graded
+    ours = release_notebook(nbformat.read(course.root / "source" / PROBLEM / f"{PROBLEM}.ipynb", 4))
+    theirs = nbformat.read(course.root / "release" / PROBLEM / f"{PROBLEM}.ipynb", 4)
+    assert [(c.source, c.metadata) for c in ours.cells] == [(c.source, c.metadata) for c in theirs.cells]
