@@ -177,7 +177,7 @@ def export(problem: Problem | str, outdir: str | Path, groups: list[str] | None 
     if with_submissions:
         for name, sub_dir in placements(exported, judge=judge, partial=groups is not None).items():
             (dest / "submissions" / sub_dir).mkdir(parents=True, exist_ok=True)
-            shutil.copy(REPO / "solutions" / p.id / name, dest / "submissions" / sub_dir / name)
+            shutil.copy(REPO / "solutions" / p.id / name, dest / "submissions" / sub_dir / Path(name).name)
     return dest
 
 

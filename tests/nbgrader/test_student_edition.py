@@ -17,6 +17,7 @@ import pytest
 import yaml
 
 from grader.course_notebooks import notebook_path
+from grader.kattis import expected_verdicts
 from grader.problems import REPO, list_problems
 from grader.student_edition import write_edition
 
@@ -42,7 +43,10 @@ def test_nothing_hidden(edition):
     names = {part for f in files for part in f.relative_to(edition).parts}
     assert not names & {"solutions", "generators", "source", ".cache", "tests", "gradebook.db", "nbgrader_config.py"}
     texts = {f: f.read_text(errors="replace") for f in files}
-    solutions = [s for s in (REPO / "solutions").rglob("*.py")]
+    # the accepted solutions: the wrong ones reproduce the original tutorial's code, which the
+    # lessons show on purpose
+    solutions = [REPO / "solutions" / p.id / name for p in list_problems()
+                 for name, verdict in expected_verdicts(p.id).items() if verdict == "AC"]
     # long lines of the reference solutions that the library (which students get) does not share
     library = "".join(f.read_text() for d in ("reference_impl", "grader") for f in (REPO / d).rglob("*.py"))
     sol_lines = {ln.strip() for s in solutions for ln in s.read_text().splitlines()
