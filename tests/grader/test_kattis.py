@@ -72,6 +72,8 @@ def verify_one(problem_id: str, tmp: str) -> dict:
         if verdict == "AC":
             src = REPO / "solutions" / problem_id / name
             r = Judge(exported, hide=[str(src.parent)]).judge_path(src)
+            if r.score != r.max_score:  # an accepted solution can miss a limit on a loaded machine: once more
+                r = Judge(exported, hide=[str(src.parent)]).judge_path(src)
             ours[name] = {group_dirname(problem, g): (p if r.group_passed(g) else 0) for g, p in r.group_points.items()}
     subs = {d.name: sorted(f.name for f in d.iterdir()) for d in (dest / "submissions").iterdir()}
     return {"out": proc.stdout + proc.stderr, "ours": ours, "dest": str(dest), "subs": subs}
