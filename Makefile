@@ -1,14 +1,14 @@
 # The course's two commands (see README.md):
 #   make demo   set everything up, then run the headless tour of the course
 #   make test   set everything up, then run the whole test suite
-# Other targets: make lab (open the lessons in JupyterLab), make bench, make setup, make clean.
+# Other targets: make lab (open the lessons in JupyterLab), make bench, make setup, make warm, make clean.
 
 PYTHON ?= python3
 VENV   ?= .venv
 PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed
 
-.PHONY: setup demo test lab bench clean chromium
+.PHONY: setup warm demo test lab bench clean chromium
 
 setup: $(STAMP)
 
@@ -18,13 +18,18 @@ $(STAMP): pyproject.toml
 	$(PY) -m pip install --quiet -e '.[dev]'
 	touch $(STAMP)
 
-demo: setup
+# Compile every numba kernel into numba's cache (a few seconds when nothing changed), so that
+# no lesson, problem or test waits for a compile; see reference_impl/warmup.py.
+warm: setup
+	$(PY) -m reference_impl warm
+
+demo: warm
 	$(PY) -m reference_impl demo
 
 # Test files run in parallel (pytest-xdist); a module that builds one expensive fixture (the
 # nbgrader class, the JupyterLab server) stays on one worker through its xdist_group mark.
 JOBS ?= 2
-test: setup chromium
+test: warm chromium
 	$(PY) -m pytest -n $(JOBS) --dist loadgroup
 
 # JupyterLab refuses to run as root without --allow-root (course containers and CI run as root).
@@ -38,10 +43,10 @@ chromium:
 	  && apt-get update -qq && apt-get install -y -qq chromium; } \
 	  || echo "chromium is not installed: tests/browser will be skipped (apt-get install chromium)"
 
-lab: setup
+lab: warm
 	$(VENV)/bin/jupyter lab $(LAB_ROOT) $(LAB_ARGS) notebooks
 
-bench: setup
+bench: warm
 	$(PY) benchmarks/bench_delaunay.py
 
 clean:

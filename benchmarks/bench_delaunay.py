@@ -1,23 +1,24 @@
 """Benchmark: reference_impl.Delaunay against Triangle and scipy.spatial in the same process.
 
-    python benchmarks/bench_delaunay.py            # full table (about 2 minutes)
-    python benchmarks/bench_delaunay.py --quick    # 1e3 .. 1e5 only
-    python benchmarks/bench_delaunay.py --sizes 1000000 --repeat 5
+    python benchmarks/bench_delaunay.py            # full table (about 5 minutes)
+    python benchmarks/bench_delaunay.py --quick    # 1e2 .. 1e5 uniform only, no start-up checks
+    python benchmarks/bench_delaunay.py --sizes 1000000 10000000 --repeat 3
 
-Prints, for uniform random points in the unit square (1e3 .. 1e6) and for the
-1000x1000 integer grid (every square cocircular): the best-of-k wall time of
+Prints, for uniform random points in the unit square (1e2 .. 1e6 by default), 300
+Gaussian clusters (sigma 1e-3), the 1000x1000 integer grid (every square cocircular)
+and nearly collinear points (a line with 1e-9 noise), the best-of-k wall time of
 
 * ``Delaunay(points).simplices``           (ours: exact predicates, neighbours too)
 * ``triangle.triangulate({'vertices': p})`` (Shewchuk's Triangle, divide and conquer)
-* ``scipy.spatial.Delaunay(p)``             (Qhull)
+* ``scipy.spatial.Delaunay(p)``             (Qhull; uniform inputs below 2e6 only)
 
 and the ratios ours/Triangle and ours/scipy (below 1.0 means we are faster).
 Ours and Triangle run alternately (ours, Triangle, ours, ...) so that machine
 noise hits both alike; scipy runs after them (once from 1e6 points on, where it
 takes ~15 s).  Then, each in a fresh subprocess: peak resident memory
-for 1e6 points, and the numba start-up cost (first call compiling into an empty
-cache, then a second process loading the cache).
-"""
+for 1e6 points, and the numba start-up cost: a cold compile of every kernel
+(``python -m reference_impl warm`` into an empty cache), then the first
+``Delaunay`` of 1000 points in a new process after that warm-up (import included).
 from __future__ import annotations
 
 import argparse
@@ -122,42 +123,62 @@ def _sub(code, *args, env=None):
     return float(out.stdout.strip().splitlines()[-1])
 
 
+def inputs(n: int, rng) -> dict[str, np.ndarray]:
+    """The input kinds of the table, about n points each (the grid is the nearest square)."""
+    centres = rng.random((300, 2))
+    k = int(round(n ** 0.5))
+    return {
+        "uniform": rng.random((n, 2)),
+        "clusters": centres[rng.integers(0, 300, n)] + rng.normal(0, 1e-3, (n, 2)),
+        "grid": np.array(np.meshgrid(np.arange(float(k)), np.arange(float(k)))).reshape(2, -1).T.copy(),
+        "near-line": np.column_stack([t := rng.random(n), 0.5 * t + rng.normal(0, 1e-9, n)]),
+    }
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--quick", action="store_true", help="sizes 1e3..1e5, no grid, no subprocess checks")
-    ap.add_argument("--sizes", type=int, nargs="*", help="uniform sizes to run")
+    ap.add_argument("--quick", action="store_true", help="uniform 1e2..1e5 only, no start-up checks")
+    ap.add_argument("--sizes", type=int, nargs="*", help="sizes to run")
     ap.add_argument("--repeat", type=int, default=5)
+    ap.add_argument("--kinds", nargs="*", default=None, help="input kinds (default: all; --quick: uniform)")
+    ap.add_argument("--no-startup", action="store_true", help="leave out memory and numba start-up")
     ap.add_argument("--no-scipy-at", type=int, default=2_000_000,
                     help="skip scipy from this size on (it takes ~15 s at 1e6)")
     args = ap.parse_args()
-    sizes = args.sizes or ([1_000, 10_000, 100_000] if args.quick else [1_000, 10_000, 100_000, 1_000_000])
+    sizes = args.sizes or ([100, 1_000, 10_000, 100_000] if args.quick else [100, 1_000, 10_000, 100_000, 1_000_000])
+    kinds = args.kinds or (["uniform"] if args.quick else ["uniform", "clusters", "grid", "near-line"])
 
     _ours(np.random.default_rng(1).random((100, 2)))  # compile (or load the cache) before timing
     print(f"python {sys.version.split()[0]}, numpy {np.__version__}, {os.cpu_count()} cpus; best of {args.repeat}")
     print(f"{'input':<22} | {'ours s':>8} | {'Triangle':>8} | {'scipy':>8} | {'/Tri':>7} | {'/scipy':>7} | {'triangles':>10}")
     print("-" * 96)
-    rng = np.random.default_rng(0)
-    for n in sizes:
-        pts = rng.random((n, 2))
-        best, count = best_times(pts, args.repeat, with_scipy=n < args.no_scipy_at)
-        print(fmt_row(f"uniform {n:,}", best, count), flush=True)
+    for kind in kinds:
+        for n in sizes:
+            pts = inputs(n, np.random.default_rng(n))[kind]
+            repeat = args.repeat if n < 1_000_000 else min(args.repeat, 3)
+            repeat = repeat * 20 if n <= 1_000 else repeat          # tiny inputs: more runs, less noise
+            best, count = best_times(pts, repeat, with_scipy=kind == "uniform" and n < args.no_scipy_at)
+            print(fmt_row(f"{kind} {len(pts):,}", best, count), flush=True)
     if not args.quick:
-        g = np.array(np.meshgrid(np.arange(1000.0), np.arange(1000.0))).reshape(2, -1).T.copy()
-        best, count = best_times(g, args.repeat, with_scipy=False)
-        print(fmt_row("grid 1000x1000", best, count), flush=True)
-        print("  (scipy is left out on the grid: Qhull needs joggling ('QJ') or merges facets there)")
-
+        print("  (scipy runs on uniform input only: Qhull needs joggling ('QJ') or merges facets on the others)")
+    if not (args.quick or args.no_startup):
         print("\npeak resident memory, 1e6 uniform points (MiB above the process's baseline):")
         for which in ("ours", "triangle", "scipy"):
             print(f"  {which:<9} {_sub(MEM_CODE, which, '1000000'):8.1f}")
 
         with tempfile.TemporaryDirectory() as cache:
             env = dict(os.environ, NUMBA_CACHE_DIR=cache, PYTHONPATH=str(ROOT))
+            t = time.perf_counter()
+            warm = subprocess.run([sys.executable, "-m", "reference_impl", "warm"], env=env, cwd=tempfile.gettempdir(),
+                                  capture_output=True, text=True, timeout=3600)
+            cold = time.perf_counter() - t
+            if warm.returncode != 0:
+                raise RuntimeError(warm.stderr)
             first = _sub(JIT_CODE, env=env)
-            second = _sub(JIT_CODE, env=env)
-        print(f"\nnumba start-up (import + first Delaunay of 1000 points, fresh process):")
-        print(f"  empty cache (compiles): {first:6.2f} s")
-        print(f"  cached (second process): {second:6.2f} s")
+        print("\nnumba start-up:")
+        print(f"  cold compile of every kernel (python -m reference_impl warm, empty cache): {cold:6.1f} s")
+        print("\n".join("    " + line.strip() for line in warm.stdout.splitlines()[1:-1]))
+        print(f"  after the warm-up, a new process: import + first Delaunay of 1000 points: {first:6.2f} s")
 
 
 if __name__ == "__main__":

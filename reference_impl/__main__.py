@@ -1,5 +1,7 @@
 """A headless tour of the course's library: ``python -m reference_impl demo``.
 
+``python -m reference_impl warm`` compiles every numba kernel into the cache (see warmup.py).
+
 It prints what a person would see in the first lessons (the tutorial's example,
 the failures the course fixes, the speed of the fast version next to scipy) and
 writes a picture to ``build/demo.png``; then it judges an accepted and a wrong
@@ -90,6 +92,9 @@ def main(argv: list[str]) -> int:
     if argv[:1] in ([], ["demo"]):
         demo()
         return 0
+    if argv[:1] == ["warm"]:
+        from .warmup import main as warm_main
+        return warm_main()
     print(__doc__)
     return 2
 

@@ -94,25 +94,62 @@ def _fix_ties(order, keys, x, y):
         i = j
 
 
+@njit(cache=True)
+def _order_keys(x, y, brio):
+    """The sort keys of ``insertion_order`` (x, y contiguous float64, n >= 1)."""
+    n = x.shape[0]
+    xmin = x[0]
+    xmax = x[0]
+    ymin = y[0]
+    ymax = y[0]
+    for i in range(1, n):
+        xmin = min(xmin, x[i])
+        xmax = max(xmax, x[i])
+        ymin = min(ymin, y[i])
+        ymax = max(ymax, y[i])
+    span = max(xmax - xmin, ymax - ymin)
+    if span > 0 and not np.isfinite(span):  # 1e308-scale spans overflow: scale down (exactly) first
+        x = x * 2.0 ** -8
+        y = y * 2.0 ** -8
+        xmin *= 2.0 ** -8
+        ymin *= 2.0 ** -8
+        span = max(xmax * 2.0 ** -8 - xmin, ymax * 2.0 ** -8 - ymin)
+    inv = 0.0
+    if span > 0 and np.isfinite(1.0 / span):
+        inv = 1.0 / span
+    rounds = 1
+    if brio:
+        rounds = min(31, max(1, int(np.log2(n)) - 6))
+    return _keys(x, y, x.view(np.uint64), y.view(np.uint64), xmin, ymin, inv, _BITS, rounds)
+
+
+@njit(cache=True)
+def _small_order(x, y, brio):
+    # the whole of insertion_order in one compiled call: for small inputs the fixed cost of
+    # several calls from Python is larger than the work
+    keys = _order_keys(x, y, brio)
+    order = np.argsort(keys)
+    _fix_ties(order, keys, x, y)
+    return order
+
+
+_SMALL = 4096  # below this, one compiled call; above, numpy's argsort (faster on large arrays)
+
+
 def insertion_order(points: np.ndarray, brio: bool = True) -> np.ndarray:
     """Return a permutation of ``range(len(points))`` to insert the points in.
 
-    ``brio=False`` gives a plain Hilbert order (one round).
+    ``brio=False`` gives a plain Hilbert order (one round).  ``points`` is an (n, 2) float64
+    array of finite values (as ``points.as_points`` returns).
     """
     n = len(points)
     if n == 0:
         return np.zeros(0, dtype=np.int64)
     x = np.ascontiguousarray(points[:, 0])
     y = np.ascontiguousarray(points[:, 1])
-    xmin, ymin = x.min(), y.min()
-    with np.errstate(over="ignore"):
-        span = max(x.max() - xmin, y.max() - ymin)
-        if span > 0 and not np.isfinite(span):  # 1e308-scale spans overflow: scale down first
-            return insertion_order(points * 2.0 ** -8, brio)
-        inv = 1.0 / span if span > 0 and np.isfinite(1.0 / span) else 0.0
-    rounds = max(1, int(np.log2(max(n, 1))) - 6) if brio else 1
-    rounds = min(rounds, 31)
-    keys = _keys(x, y, x.view(np.uint64), y.view(np.uint64), xmin, ymin, inv, _BITS, rounds)
+    if n < _SMALL:
+        return _small_order(x, y, brio)
+    keys = _order_keys(x, y, brio)
     order = np.argsort(keys, kind="quicksort")
     _fix_ties(order, keys, x, y)
     return order

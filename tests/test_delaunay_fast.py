@@ -218,10 +218,20 @@ def test_hilbert_curve_visits_every_cell_with_unit_steps():
             assert abs(x0 - x1) + abs(y0 - y1) == 1
 
 
-def test_insertion_order_depends_only_on_the_point_set():
-    from reference_impl.ordering import insertion_order
-    pts = np.vstack([pointsets.uniform(500, 3), pointsets.grid(10)])
-    ref = pts[insertion_order(pts)]
+@pytest.mark.parametrize("n", [500, 6000])          # one compiled call below 4096 points, numpy's sort above
+@pytest.mark.parametrize("scale", [1.0, 1.6e308])  # 1.6e308: the span overflows, keys come from scaled points
+def test_insertion_order_depends_only_on_the_point_set(n, scale):
+    from reference_impl.ordering import _order_keys, insertion_order
+    grid = pointsets.grid(10) / 9.0
+    pts = np.vstack([pointsets.uniform(n, 3), grid, grid]) * scale  # duplicates too
+    assert np.isfinite(pts).all()
+    pts[::2] *= -1
+    order = insertion_order(pts)
+    assert sorted(order.tolist()) == list(range(len(pts)))
+    ref = pts[order]
+    # sorted by key, equal keys by coordinates
+    keys = _order_keys(pts[:, 0].copy(), pts[:, 1].copy(), True)
+    assert (ref == pts[np.lexsort((pts[:, 1], pts[:, 0], keys))]).all()
     perm = np.random.default_rng(0).permutation(len(pts))
     assert (pts[perm][insertion_order(pts[perm])] == ref).all()
 

@@ -1,0 +1,191 @@
+"""Warm-up: compile every numba kernel of the library into numba's on-disk cache, once.
+
+    python -m reference_impl warm          # what `make setup` runs (about a minute, cold)
+
+A numba kernel compiles on its first call in a process whose cache holds no
+machine code for it; later processes load it from the cache.  Without a warm-up
+a student's first cell in a lesson would stall for seconds (the 2D kernel alone
+takes several), and so would the first voronoi(), the first NavMesh, ... each on
+its own.  ``warm()`` calls every public feature on a tiny input, which compiles
+(or loads) every kernel behind it, in the cache location numba uses at run time
+(``__pycache__`` beside the sources, ``$NUMBA_CACHE_DIR``, or ``~/.cache/numba``
+when the package directory is read-only: the same rule as ``_jitcache``).
+
+The features are run in a fixed list (``FEATURES``) and each is timed, so the
+output says where compile time goes.  ``not_cached()`` names the kernels that the
+cache does not hold (tests/test_warmup.py keeps it empty after a warm-up).
+
+>>> seconds = warm(progress=None)          # (already cached here: fast)
+>>> sorted(seconds)[:3]
+['2d delaunay', '2d updates', '3d delaunay']
+"""
+from __future__ import annotations
+
+import importlib
+import sys
+import time
+from pathlib import Path
+from typing import Callable
+
+import numpy as np
+
+__all__ = ["FEATURES", "warm", "not_cached", "kernels"]
+
+_PKG = Path(__file__).resolve().parent
+
+
+def _delaunay() -> None:
+    from .delaunay import Delaunay
+    rng = np.random.default_rng(0)
+    for pts in (rng.random((100, 2)), rng.random((5000, 2)),          # small and large ordering paths
+                np.array([(i % 5, i // 5) for i in range(25)], float),  # integer ties
+                np.array([(0, 0), (1, 1), (2, 2)], float), np.zeros((0, 2))):
+        d = Delaunay(pts)
+        d.simplices, d.neighbors, d.hull, d.index_map, d.edges()
+    d.find_simplex((0.5, 0.5)), d.find_simplex(rng.random((100, 2)))
+
+
+def _updates() -> None:
+    from .delaunay import Delaunay
+    d = Delaunay(np.random.default_rng(1).random((30, 2)))
+    d.insert((0.5, 0.25)), d.insert((0.5, 0.25)), d.insert((3.0, 3.0))
+    d.vertex_neighbors(0), d.vertex_neighbors(1, strict=True)
+    for i in range(5):
+        d.remove(i)
+    d.simplices, d.neighbors, d.hull
+
+
+def _exact() -> None:
+    from .predicates import incircle, orient2d
+    from .predicates3d import insphere, insphere_batch, orient3d, orient3d_batch
+    for s in (1.0, 1e-300, 1e300):
+        orient2d((0, 0), (s, s), (2 * s, 2 * s)), incircle((0, 0), (s, 0), (0, s), (s, s))
+        orient3d((0, 0, 0), (s, 0, 0), (0, s, 0), (s, s, 0))
+        insphere((0, 0, 0), (s, 0, 0), (0, s, 0), (0, 0, s), (s, s, s))
+    orient2d((0.5, 0.5000000000000001), (12, 12), (24, 24))
+    orient3d_batch([[0, 0, 0]], [[1, 0, 0]], [[0, 1, 0]], [[0, 0, 1]])
+    insphere_batch([[0, 0, 0]], [[1, 0, 0]], [[0, 1, 0]], [[0, 0, -1]], [[5, 5, 5]])
+    incircle((1e-300, 0), (1, 0), (0, 1), (1e300, 1))
+
+
+def _voronoi() -> None:
+    from .hull import convex_hull
+    from .voronoi import voronoi
+    pts = np.random.default_rng(2).random((50, 2))
+    voronoi(pts, (0, 0, 1, 1)), convex_hull(pts), convex_hull(pts, collinear=True)
+    voronoi([(0.1, 0.1), (0.5, 0.5), (0.9, 0.9)], (0, 0, 1, 1))            # collinear sites
+
+
+def _proximity() -> None:
+    from .clearance import max_clearance
+    from .empty_circle import largest_empty_circle
+    from .proximity import closest_pair, euclidean_mst, gabriel_graph, relative_neighborhood_graph
+    grid = np.array([(i % 6, i // 6) for i in range(36)], float)       # equal lengths: the exact sort
+    for pts in (np.random.default_rng(3).random((60, 2)), grid):
+        euclidean_mst(pts), closest_pair(pts), gabriel_graph(pts), relative_neighborhood_graph(pts)
+        largest_empty_circle(pts), max_clearance(pts, (0.3, 0.2), (4.6, 4.7))
+
+
+def _meshes() -> None:
+    from .constrained import ConstrainedDelaunay, constrained_delaunay
+    from .flips import apply_flips, flip_to_delaunay, laplacian_smooth, lawson_flip, mesh_quality, validate_triangulation
+    from .navmesh import NavMesh, polygon_triangulation
+    square = [(0, 0), (4, 0), (4, 4), (0, 4), (1, 1), (3, 3), (1, 3), (3, 1)]
+    cd = ConstrainedDelaunay(square, [(4, 5)])
+    cd.simplices, cd.neighbors, cd.constrained, cd.edges(), cd.constraint_edges()
+    constrained_delaunay(square, [(4, 5), (0, 1)])
+    fan = np.array([(0, 0), (2, 0), (2, 2), (0, 2), (1.0, 0.5)])
+    tris = np.array([(0, 1, 4), (1, 2, 4), (2, 3, 4), (3, 0, 4)])
+    validate_triangulation(fan, tris), lawson_flip(fan, tris)
+    apply_flips(fan, tris, flip_to_delaunay(fan, tris))
+    laplacian_smooth(fan, tris), mesh_quality(fan, tris)
+    polygon_triangulation([(0, 0), (6, 0), (6, 6), (0, 6)], [[(2, 2), (4, 2), (4, 4), (2, 4)]])
+    nav = NavMesh([(0, 0), (4, 0), (4, 4), (2, 1), (0, 4)])
+    nav.shortest_path((0.5, 3), (3.5, 3)), nav.locate((2, 3)), nav.is_visible((0.5, 3), (3.5, 3))
+
+
+def _dynamic() -> None:
+    from .dynamic import DynamicNetwork
+    net = DynamicNetwork()
+    ids = [net.join(x, y) for x, y in ((0, 0), (1, 0), (0, 1), (1, 1), (0.5, 0.4))]
+    net.fail(ids[-1]), net.neighbors(ids[0]), net.links()
+
+
+def _space() -> None:
+    from .delaunay3d import Delaunay3D
+    from .spherical import SphericalDelaunay, lonlat_to_xyz
+    rng = np.random.default_rng(4)
+    d3 = Delaunay3D(rng.random((60, 3)))
+    d3.simplices, d3.neighbors, d3.hull_facets, d3.find_simplex((0.5, 0.5, 0.5))
+    Delaunay3D(np.array([(i, j, k) for i in range(3) for j in range(3) for k in range(3)], float)).simplices
+    sd = SphericalDelaunay(lonlat_to_xyz(np.column_stack([rng.uniform(-180, 180, 40), rng.uniform(-80, 80, 40)])))
+    sd.simplices, sd.neighbors
+
+
+def _checkers() -> None:
+    from .delaunay import Delaunay
+    from .verify import check_delaunay
+    pts = np.random.default_rng(5).random((30, 2))
+    check_delaunay(pts, Delaunay(pts).simplices)
+
+
+FEATURES: dict[str, Callable[[], None]] = {
+    "exact predicates": _exact, "2d delaunay": _delaunay, "2d updates": _updates,
+    "voronoi and hull": _voronoi, "proximity": _proximity, "meshes and paths": _meshes,
+    "dynamic network": _dynamic, "3d delaunay": _space, "checkers": _checkers,
+}
+
+
+def warm(progress: Callable[[str], None] | None = print) -> dict[str, float]:
+    """Run every feature once on a tiny input; return seconds per feature (compile or load).
+
+    ``progress`` receives one line per feature as it finishes (``None``: silent).
+    """
+    seconds = {}
+    for name, run in FEATURES.items():
+        t = time.perf_counter()
+        run()
+        seconds[name] = time.perf_counter() - t
+        if progress:
+            progress(f"  {name:<18} {seconds[name]:6.2f} s")
+    return seconds
+
+
+def kernels() -> dict[str, object]:
+    """Every numba dispatcher defined in the package: ``module.name`` -> dispatcher."""
+    from numba.core.registry import CPUDispatcher
+    found = {}
+    for f in sorted(_PKG.glob("*.py")):
+        if f.stem in ("__main__", "warmup"):
+            continue
+        mod = importlib.import_module(f"{__package__}.{f.stem}")
+        for name, obj in vars(mod).items():
+            if isinstance(obj, CPUDispatcher) and obj.py_func.__module__ == mod.__name__:
+                found[f"{f.stem}.{name}"] = obj
+    return found
+
+
+def not_cached() -> list[str]:
+    """Kernels of the package that numba's cache does not hold (no index file where numba
+    looks), leaving out those marked ``inline="always"`` (compiled only inside their callers).
+    Empty after ``warm()``: every kernel is reached from some feature."""
+    return sorted(name for name, disp in kernels().items()
+                  if disp.targetoptions.get("inline") != "always"
+                  and not Path(disp._cache._cache_file._index_path).exists())
+
+
+def main() -> int:
+    t = time.perf_counter()
+    print("warming numba's cache (each feature compiles once, then loads from the cache):", flush=True)
+    warm(progress=lambda line: print(line, flush=True))
+    missed = not_cached()
+    print(f"done in {time.perf_counter() - t:.1f} s")
+    if missed:
+        print(f"error: the cache does not hold these kernels (no feature in warmup.FEATURES reaches them): "
+              f"{', '.join(missed)}", file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
