@@ -19,6 +19,7 @@ takes ~15 s).  Then, each in a fresh subprocess: peak resident memory
 for 1e6 points, and the numba start-up cost: a cold compile of every kernel
 (``python -m reference_impl warm`` into an empty cache), then the first
 ``Delaunay`` of 1000 points in a new process after that warm-up (import included).
+"""
 from __future__ import annotations
 
 import argparse
