@@ -75,7 +75,8 @@ def best_times(points, repeat, with_scipy=True):
 def fmt_row(label, best, count):
     ours, tri = best["ours"], best["triangle"]
     sc = best.get("scipy")
-    cells = [f"{label:<22}", f"{ours:8.3f}", f"{tri:8.3f}", f"{sc:8.3f}" if sc else "       -",
+    ms = lambda t: f"{1e3 * t:9.3f}"  # noqa: E731
+    cells = [f"{label:<22}", ms(ours), ms(tri), ms(sc) if sc else "        -",
              f"{ours / tri:7.2f}", f"{ours / sc:7.3f}" if sc else "      -", f"{count['ours']:>10,}"]
     return " | ".join(cells)
 
@@ -151,7 +152,7 @@ def main() -> None:
 
     _ours(np.random.default_rng(1).random((100, 2)))  # compile (or load the cache) before timing
     print(f"python {sys.version.split()[0]}, numpy {np.__version__}, {os.cpu_count()} cpus; best of {args.repeat}")
-    print(f"{'input':<22} | {'ours s':>8} | {'Triangle':>8} | {'scipy':>8} | {'/Tri':>7} | {'/scipy':>7} | {'triangles':>10}")
+    print(f"{'input':<22} | {'ours ms':>9} | {'Triangle':>9} | {'scipy':>9} | {'/Tri':>7} | {'/scipy':>7} | {'triangles':>10}")
     print("-" * 96)
     for kind in kinds:
         for n in sizes:
