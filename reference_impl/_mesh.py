@@ -46,7 +46,8 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from .predicates import incircle_nb, orient2d_nb
+from .ordering import small_order
+from .predicates import WORKSPACE_SIZE, incircle_nb, orient2d_nb
 
 INF = -1
 RECORD = 8  # int32 entries per triangle record
@@ -278,6 +279,52 @@ def build(P, M, stack, bad, ba, bb, bo, start_of, state, dup, w):
             continue
         dup[p] = insert(p, P, M, stack, bad, ba, bb, bo, start_of, state, w)
     return True
+
+
+@njit(cache=True)
+def triangulate(pts, order, compute_order, extract_now):
+    """All of ``Delaunay(points)`` in one compiled call (the fixed cost of many small calls
+    from Python is larger than the work below a few thousand points).
+
+    ``pts``: (n, 2) validated input; ``order``: the insertion order (indices into ``pts``;
+    with ``compute_order`` it is computed here instead, by ``ordering.small_order``).  Allocates the mesh for ``pts[order]`` and
+    builds it; with ``extract_now`` also the output triangles.  Returns ``(flat, order, P, M,
+    stack, bad, ba, bb, bo, start_of, state, dup, w, simplices, out_of, rep)``; ``flat`` is
+    True when nothing was built (fewer than three points, or all collinear), and
+    ``simplices``/``out_of``/``rep`` are empty unless extracted."""
+    if compute_order:
+        order = small_order(pts[:, 0].copy(), pts[:, 1].copy(), True)
+    n = order.shape[0]
+    nv = max(n, 4)
+    nt = 2 * n + 8
+    P = np.empty((nv, 2))
+    for i in range(n):
+        P[i, 0] = pts[order[i], 0]
+        P[i, 1] = pts[order[i], 1]
+    M = np.zeros(RECORD * nt, dtype=np.int32)
+    stack = np.empty(nt, dtype=np.int32)
+    bad = np.empty(nt, dtype=np.int32)
+    ba = np.empty(nt, dtype=np.int32)
+    bb = np.empty(nt, dtype=np.int32)
+    bo = np.empty(nt, dtype=np.int32)
+    start_of = np.empty(nv + 1, dtype=np.int32)
+    state = np.zeros(STATE_SIZE, dtype=np.int64)
+    dup = np.full(nv, -1, dtype=np.int64)
+    w = np.empty(WORKSPACE_SIZE)
+    flat = n < 3 or not build(P[:n], M, stack, bad, ba, bb, bo, start_of, state, dup, w)
+    if flat:
+        dup[:] = -1                  # (flat results are computed from the coordinates)
+    simp = np.empty((0, 3), dtype=np.int64)
+    out_of = np.empty(0, dtype=np.int64)
+    rep = np.empty(0, dtype=np.int64)
+    if extract_now and not flat:
+        rep = order.copy()
+        for v in range(n):
+            if dup[v] >= 0:
+                rep = smallest_labels(order, dup[:n])
+                break
+        simp, out_of = extract(M, state[S_NTRI], rep)
+    return flat, order, P, M, stack, bad, ba, bb, bo, start_of, state, dup, w, simp, out_of, rep
 
 
 @njit(cache=True)

@@ -40,13 +40,14 @@ import numbers
 import numpy as np
 
 from . import _mesh, _mesh_remove
-from .ordering import insertion_order
+from .ordering import SMALL, insertion_order
 from .points import as_point, as_points
-from .predicates import orient2d_nb, workspace
+from .predicates import orient2d_nb
 
 __all__ = ["Delaunay"]
 
 _ITYPE = np.int32  # mesh arrays: half the memory traffic of int64
+_NO_ORDER = np.zeros(0, dtype=np.int64)
 
 
 def _grown(a: np.ndarray, size: int, fill) -> np.ndarray:
@@ -88,10 +89,6 @@ class Delaunay:
         self._build()
 
     # ------------------------------------------------------------------ building
-    def _alloc(self, nverts: int, ntris: int) -> None:
-        self._alloc_vertices(nverts)
-        self._alloc_triangles(ntris)
-
     def _alloc_vertices(self, nverts: int) -> None:
         self._cap_v = nverts
         self._P = np.empty((nverts, 2))                  # coordinates in insertion order
@@ -107,28 +104,23 @@ class Delaunay:
         self._bo = np.empty(ntris, dtype=_ITYPE)
 
     def _build(self) -> None:
-        """Triangulate the live input points from scratch."""
+        """Triangulate the live input points from scratch (one compiled call, ``_mesh.triangulate``)."""
         pts = self.points
-        if self._nremoved:
+        small = len(pts) - self._nremoved < SMALL     # small: the order is computed in the call,
+        if self._nremoved:                            # and the triangles are extracted at once
             live = np.flatnonzero(~self._removed[:self._npts])
             order = live[insertion_order(pts[live])]
         else:
-            order = insertion_order(pts)
+            order = _NO_ORDER if small else insertion_order(pts)
+        (self._flat, order, self._P, self._M, self._stack, self._bad, self._ba, self._bb, self._bo,
+         self._start_of, self._state, self._dup, self._w, simp, out_of, rep) = _mesh.triangulate(
+            pts, order, small and not self._nremoved, small)
+        self._cap_v, self._cap_t = len(self._P), len(self._stack)
         n = len(order)
-        self._alloc(max(n, 4), 2 * n + 8)
         # internal vertex u = input point order[u]
-        self._order = order if n >= 4 else _grown(order.astype(np.int64), 4, -1)
-        self._P[:n] = pts[order]
+        self._order = order if n >= 4 else _grown(order, 4, -1)
         self._n = n
-        self._state = np.zeros(_mesh.STATE_SIZE, dtype=np.int64)
-        self._dup = np.full(max(n, 4), -1, dtype=np.int64)   # internal u duplicates vertex dup[u]
-        self._dead = np.zeros(max(n, 4), dtype=bool)         # internal u was removed
-        self._w = workspace()
-        self._flat = n < 3 or not _mesh.build(
-            self._P[:n], self._M, self._stack, self._bad,
-            self._ba, self._bb, self._bo, self._start_of, self._state, self._dup, self._w)
-        if self._flat:
-            self._dup[:n] = -1     # (flat results are computed from the coordinates)
+        self._dead = np.zeros(self._cap_v, dtype=bool)       # internal u was removed
         # Bookkeeping for updates, made on the first remove() / vertex_neighbors():
         # _internal (input -> internal), _label (site -> smallest live input index),
         # _copies (site -> its live internal duplicates), _free (internal ids of removed
@@ -136,6 +128,8 @@ class Delaunay:
         self._dyn = False
         self._line = None          # flat: two distinct live internal vertices (or None)
         self._cache = {}
+        if small and not self._flat:
+            self._cache.update(simplices=simp, out_of=out_of, rep=rep, labels=rep)
 
     def _grow_vertices(self) -> None:
         """Double the room for internal vertices (used by ``insert``)."""

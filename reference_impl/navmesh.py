@@ -65,8 +65,6 @@ from typing import NamedTuple, Sequence
 import numpy as np
 from numba import njit
 from numpy.typing import ArrayLike
-from scipy.sparse import coo_matrix
-from scipy.sparse.csgraph import connected_components
 
 from .constrained import _ahead, _fmt, _run_cdt, _slot, _third, fan_search, orient_many
 from .delaunay import Delaunay
@@ -195,6 +193,9 @@ def polygon_triangulation(boundary: ArrayLike, holes: Sequence[ArrayLike] | None
         return np.where(sorted_key[pos] == u * n + v, order[pos] // 3, -1), ring_of[u]
 
     t_idx, k_idx = np.nonzero((nbr >= 0) & (cid < 0))
+    from scipy.sparse import coo_matrix          # (imported here: scipy.sparse takes 0.2-0.4 s to import)
+    from scipy.sparse.csgraph import connected_components
+
     graph = coo_matrix((np.ones(len(t_idx)), (t_idx, nbr[t_idx, k_idx])), shape=(m, m))
     _, label = connected_components(graph, directed=False)
     seeds, _ = left_triangles(ring_idx[0])

@@ -23,7 +23,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-__all__ = ["hilbert_index", "insertion_order"]
+__all__ = ["hilbert_index", "insertion_order", "small_order", "SMALL"]
 
 _BITS = 16  # curve resolution per axis: a 65536 x 65536 grid
 
@@ -124,7 +124,7 @@ def _order_keys(x, y, brio):
 
 
 @njit(cache=True)
-def _small_order(x, y, brio):
+def small_order(x, y, brio):
     # the whole of insertion_order in one compiled call: for small inputs the fixed cost of
     # several calls from Python is larger than the work
     keys = _order_keys(x, y, brio)
@@ -133,7 +133,7 @@ def _small_order(x, y, brio):
     return order
 
 
-_SMALL = 4096  # below this, one compiled call; above, numpy's argsort (faster on large arrays)
+SMALL = 4096  # below this, one compiled call; above, numpy's argsort (faster on large arrays)
 
 
 def insertion_order(points: np.ndarray, brio: bool = True) -> np.ndarray:
@@ -147,8 +147,8 @@ def insertion_order(points: np.ndarray, brio: bool = True) -> np.ndarray:
         return np.zeros(0, dtype=np.int64)
     x = np.ascontiguousarray(points[:, 0])
     y = np.ascontiguousarray(points[:, 1])
-    if n < _SMALL:
-        return _small_order(x, y, brio)
+    if n < SMALL:
+        return small_order(x, y, brio)
     keys = _order_keys(x, y, brio)
     order = np.argsort(keys, kind="quicksort")
     _fix_ties(order, keys, x, y)
