@@ -111,8 +111,10 @@ def locate(M, P, px, py, start, w, state):
             o = M[8 * t + 3 + k]
             if o == prev:
                 continue
-            u = M[8 * t + (k + 1) % 3]
-            v = M[8 * t + (k + 2) % 3]
+            k1 = k + 1 if k < 2 else 0      # (k + 1) % 3 without a division: 3-5% of a build
+            k2 = k1 + 1 if k1 < 2 else 0
+            u = M[8 * t + k1]
+            v = M[8 * t + k2]
             if orient2d_nb(P[u, 0], P[u, 1], P[v, 0], P[v, 1], px, py, w) < 0:
                 state[S_STEPS] += 1
                 prev = t
@@ -179,8 +181,10 @@ def insert(p, P, M, stack, bad, ba, bb, bo, start_of, state, w):
                 top += 1
             else:
                 M[8 * o + 6] = -stamp
-                ba[nb] = M[8 * s + (k + 1) % 3]
-                bb[nb] = M[8 * s + (k + 2) % 3]
+                k1 = k + 1 if k < 2 else 0
+                k2 = k1 + 1 if k1 < 2 else 0
+                ba[nb] = M[8 * s + k1]
+                bb[nb] = M[8 * s + k2]
                 bo[nb] = o
                 nb += 1
     state[S_BAD] += nbad
