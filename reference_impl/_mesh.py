@@ -322,11 +322,7 @@ def triangulate(pts, order, compute_order, extract_now):
     out_of = np.empty(0, dtype=np.int64)
     rep = np.empty(0, dtype=np.int64)
     if extract_now and not flat:
-        rep = order.copy()
-        for v in range(n):
-            if dup[v] >= 0:
-                rep = smallest_labels(order, dup[:n])
-                break
+        rep = smallest_labels(order, dup[:n])     # (= order when there are no duplicates)
         simp, out_of = extract(M, state[S_NTRI], rep)
     return flat, order, P, M, stack, bad, ba, bb, bo, start_of, state, dup, w, simp, out_of, rep
 
