@@ -12,3 +12,11 @@ collect_ignore_glob = [
     "assignments/*",
     "build/*",
 ]
+
+
+def pytest_configure(config):
+    """Drop numba machine code compiled against since-edited library modules (importing the
+    package never does; ``make test`` has already run the warm-up, which does the same)."""
+    if not hasattr(config, "workerinput"):  # once, in the controlling process
+        from reference_impl._jitcache import purge_stale_cache
+        purge_stale_cache()

@@ -28,8 +28,8 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from reference_impl.delaunay3d import Delaunay3D  # noqa: E402
-from reference_impl.spherical import SphericalDelaunay  # noqa: E402
+from reference_impl.mesh.delaunay3d import Delaunay3D  # noqa: E402
+from reference_impl.structures.spherical import SphericalDelaunay  # noqa: E402
 
 
 def best_times(runners, repeat):

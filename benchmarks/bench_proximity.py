@@ -39,8 +39,8 @@ import scipy.sparse.csgraph  # noqa: E402
 import scipy.spatial  # noqa: E402
 import triangle  # noqa: E402
 
-from reference_impl.flips import lawson_flip  # noqa: E402
-from reference_impl.proximity import (closest_pair, euclidean_mst, gabriel_graph,  # noqa: E402
+from reference_impl.structures.flips import lawson_flip  # noqa: E402
+from reference_impl.structures.proximity import (closest_pair, euclidean_mst, gabriel_graph,  # noqa: E402
                                       relative_neighborhood_graph)
 
 

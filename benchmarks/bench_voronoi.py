@@ -30,10 +30,10 @@ sys.path.insert(0, str(ROOT))
 
 from scipy.spatial import ConvexHull, Delaunay as ScipyDelaunay, Voronoi  # noqa: E402
 
-from reference_impl.clearance import max_clearance  # noqa: E402
-from reference_impl.empty_circle import largest_empty_circle  # noqa: E402
-from reference_impl.hull import convex_hull  # noqa: E402
-from reference_impl.voronoi import voronoi  # noqa: E402
+from reference_impl.structures.clearance import max_clearance  # noqa: E402
+from reference_impl.structures.empty_circle import largest_empty_circle  # noqa: E402
+from reference_impl.structures.hull import convex_hull  # noqa: E402
+from reference_impl.structures.voronoi import voronoi  # noqa: E402
 
 BOX = (-0.1, -0.1, 1.1, 1.1)
 

@@ -83,10 +83,12 @@ def _interface_errors(problem) -> list[str]:
     except (ValueError, SyntaxError) as exc:
         return errors + [str(exc)]
     for name in names:
-        f = checker_runtime.LIBRARY_DIR / f"{name}.py"
-        if not f.is_file():
-            errors.append(f"LIBRARY names {name!r}: {f} does not exist")
-        elif foreign_imports(f.read_text(), str(f), allow_in=()):
+        try:
+            f = checker_runtime.library_file(name)
+        except ValueError as exc:
+            errors.append(f"LIBRARY names {name!r}: {exc}")
+            continue
+        if foreign_imports(f.read_text(), str(f), allow_in=()):
             errors.append(f"LIBRARY module {name!r} imports {', '.join(foreign_imports(f.read_text(), str(f), ()))}: "
                           "library modules for checkers must be stdlib-only")
     if any(isinstance(n, ast.If) and "__name__" in ast.unparse(n.test) for n in ast.parse(source).body):

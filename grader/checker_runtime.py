@@ -4,10 +4,10 @@ Kattis output validator.
 A checker (``assignments/<id>/output_validator/checker.py``) is plain stdlib-only Python. When it
 needs exact helpers from the library it names them in a module-level literal::
 
-    LIBRARY = ("verify",)      # stdlib-only modules reference_impl/<name>.py
+    LIBRARY = ("verify",)      # stdlib-only modules of reference_impl, by file name
 
 and uses ``verify.check_delaunay(...)`` as a global: :func:`load_checker` binds ``verify`` (loaded
-by path from ``reference_impl/verify.py``, without importing the ``reference_impl`` package, which
+by path from ``reference_impl/exact/verify.py``, without importing the ``reference_impl`` package, which
 would pull in numpy and numba) before the checker's code runs. ``python -m grader export-kattis``
 appends this file's source and the named modules' sources to the exported checker, so the copy runs
 on its own (``python3 checker.py input answer feedback_dir < team_output``, exit 42/43) through
@@ -27,6 +27,22 @@ from pathlib import Path
 
 #: where library modules live in the checkout (unused in an exported copy, which embeds them)
 LIBRARY_DIR = Path(globals().get("__file__", ".")).resolve().parent.parent / "reference_impl"
+
+
+def library_file(name: str, library_dir=None) -> Path:
+    """The one file ``<name>.py`` in the library's tree (``verify`` is ``reference_impl/exact/verify.py``).
+
+    Raises ValueError when there is none or more than one.
+
+    >>> library_file("verify").relative_to(LIBRARY_DIR).as_posix()
+    'exact/verify.py'
+    """
+    lib = Path(library_dir) if library_dir else LIBRARY_DIR
+    found = sorted(f for f in lib.rglob(f"{name}.py") if "__pycache__" not in f.parts)
+    if len(found) != 1:
+        where = "does not exist" if not found else "is ambiguous: " + ", ".join(str(f) for f in found)
+        raise ValueError(f"{lib / '**' / (name + '.py')} {where}")
+    return found[0]
 
 
 def library_names(source: str, filename: str = "checker.py") -> tuple:
@@ -64,13 +80,12 @@ def load_checker(path, module_name: str, library_dir=None) -> types.ModuleType:
     """Import the checker at ``path`` with the library modules it names already bound."""
     path = Path(path)
     source = path.read_text()
-    lib = Path(library_dir) if library_dir else LIBRARY_DIR
     sources = {}
     for name in library_names(source, str(path)):
-        f = lib / f"{name}.py"
-        if not f.is_file():
-            raise ValueError(f"{path}: LIBRARY names {name!r} but {f} does not exist")
-        sources[name] = f.read_text()
+        try:
+            sources[name] = library_file(name, library_dir).read_text()
+        except ValueError as exc:
+            raise ValueError(f"{path}: LIBRARY names {name!r} but {exc}") from None
     module = types.ModuleType(module_name)
     module.__file__ = str(path)
     sys.modules[module_name] = module
@@ -115,14 +130,13 @@ def embed(checker_source: str, library_dir=None) -> str:
     """The self-contained Kattis copy of a checker: this runtime and the library modules it names
     (as string constants ``EMBEDDED_<NAME>_SOURCE``) inserted right after its ``LIBRARY`` line
     (so module-level code may use them, as in the checkout), and the ``__main__`` entry at the end."""
-    lib = Path(library_dir) if library_dir else LIBRARY_DIR
     names = library_names(checker_source)
     block = ["# ---- inserted by `python -m grader export-kattis`: the shared checker runtime and the",
              "# ---- library modules named in LIBRARY, so that this file runs on its own as a Kattis",
              "# ---- output validator: python3 checker.py input answer feedback_dir < team_output",
              f"EMBEDDED_CHECKER_RUNTIME_SOURCE = {Path(__file__).read_text()!r}"]
     for name in names:
-        block.append(f"EMBEDDED_{name.upper()}_SOURCE = {(lib / f'{name}.py').read_text()!r}")
+        block.append(f"EMBEDDED_{name.upper()}_SOURCE = {library_file(name, library_dir).read_text()!r}")
     block += ['_checker_runtime = {"__name__": "checker_runtime"}',
               'exec(compile(EMBEDDED_CHECKER_RUNTIME_SOURCE, "checker_runtime.py", "exec"), _checker_runtime)',
               '_checker_runtime["bind_library"](globals(), {'

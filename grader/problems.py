@@ -207,7 +207,7 @@ class Problem:
         of other packages that the generator loads."""
         files = [f for f in (self.checker_path, self.generator_path) if f is not None and f.is_file()]
         if self.checker_path.is_file():
-            files += [checker_runtime.LIBRARY_DIR / f"{n}.py"
+            files += [checker_runtime.library_file(n)
                       for n in checker_runtime.library_names(self.checker_path.read_text())]
         if self.generator_path is not None and self.generator_path.is_file():
             root, seen, todo = str(problems_root()), set(), [self.generator]

@@ -18,7 +18,7 @@ import numpy as np
 
 def demo(out_dir: str = "build") -> None:
     from reference_impl import Delaunay, orient2d
-    from reference_impl.verify import check_delaunay
+    from reference_impl.exact.verify import check_delaunay
 
     print("Delaunay course: a headless tour\n")
     four = [(1, 1), (3, 2), (5, 1), (4, 4)]
@@ -28,7 +28,7 @@ def demo(out_dir: str = "build") -> None:
     print(f"   triangles (counter-clockwise, point indices): {d.simplices.tolist()}")
     print(f"   convex hull: {d.hull.tolist()}   (first call compiles the numba kernel: {time.perf_counter() - t0:.1f} s)")
     try:
-        from reference_impl.bowyer_watson import dry_run
+        from reference_impl.teaching.bowyer_watson import dry_run
         print("\n" + "\n".join("   " + line for line in dry_run(four).splitlines()))
     except ImportError:
         pass
@@ -93,7 +93,7 @@ def main(argv: list[str]) -> int:
         demo()
         return 0
     if argv[:1] == ["warm"]:
-        from .warmup import main as warm_main
+        from reference_impl.warmup import main as warm_main
         return warm_main()
     print(__doc__)
     return 2

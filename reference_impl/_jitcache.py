@@ -2,37 +2,74 @@
 
 numba re-compiles a cached function when *its own* source file changes, but not
 when a function it inlines or calls from *another* module changes: edit
-``predicates.py`` and the cached kernels in ``_mesh.py`` would keep running the
-old predicates.  So, once per process, for every module of the package we hash
-its source together with the sources of the package modules it imports
+``exact/predicates.py`` and the cached kernels in ``mesh/kernel.py`` would keep
+running the old predicates.  So :func:`purge_stale_cache` hashes every module of
+the package together with the sources of the package modules it imports
 (transitively); when that hash differs from the one stamped in numba's cache
-directory, we drop that module's cached machine code (numba recompiles it on
+directory, it drops that module's cached machine code (numba recompiles it on
 next use).  Editing a module thus invalidates exactly its dependants.
 
-The cache directory is the one numba itself picks (its own locator classes):
-``__pycache__`` beside the sources, ``$NUMBA_CACHE_DIR``, or the user-wide
-``~/.cache/numba`` when the package directory is read-only.
+Importing the package never touches the cache: ``python -m reference_impl warm``
+(run by ``make demo``, ``make test`` and ``make lab``) and the test suite's
+``conftest.py`` call :func:`purge_stale_cache`.
 
->>> sorted(dependencies()["_mesh"])[:2]
-['_mesh', 'expansion']
+The cache directory is the one numba itself picks for each source file (its own
+locator classes): ``__pycache__`` beside the source, ``$NUMBA_CACHE_DIR``, or the
+user-wide ``~/.cache/numba`` when the package directory is read-only.
+
+>>> {"exact.predicates", "mesh.ordering"} <= dependencies()["mesh.kernel"]
+True
 """
 from __future__ import annotations
 
+import ast
 import hashlib
-import re
 from pathlib import Path
 
 _PKG = Path(__file__).resolve().parent
-_IMPORT = re.compile(r"^\s*(?:from\s+(?:\.|reference_impl\.)(\w+)\s+import|import\s+reference_impl\.(\w+))",
-                     re.MULTILINE)
+
+
+def _modules() -> dict[str, Path]:
+    """Dotted name below the package (``"mesh.kernel"``) -> source file, for every module."""
+    out = {}
+    for f in sorted(_PKG.rglob("*.py")):
+        parts = f.relative_to(_PKG).with_suffix("").parts
+        if "__pycache__" in parts:
+            continue
+        out[".".join(parts[:-1] if parts[-1] == "__init__" else parts) or "__init__"] = f
+    return out
+
+
+def _imports(name: str, source: str, known: set[str]) -> set[str]:
+    """The package modules that module ``name`` imports (absolute or relative)."""
+    package = name.split(".")[:-1] if not name.endswith("__init__") else name.split(".")
+    found = set()
+    for node in ast.walk(ast.parse(source)):
+        targets = []
+        if isinstance(node, ast.Import):
+            targets = [a.name for a in node.names]
+        elif isinstance(node, ast.ImportFrom):
+            if node.level:
+                base = package[:len(package) - node.level + 1]
+                mod = ".".join(["reference_impl", *base, *([node.module] if node.module else [])])
+            else:
+                mod = node.module or ""
+            targets = [mod] + [f"{mod}.{a.name}" for a in node.names]
+        for t in targets:
+            if t.startswith("reference_impl."):
+                t = t[len("reference_impl."):]
+                if t in known:
+                    found.add(t)
+    return found
 
 
 def dependencies() -> dict[str, set[str]]:
     """module -> the package modules it depends on, itself included (transitive closure)."""
-    sources = {f.stem: f.read_text(encoding="utf-8") for f in _PKG.glob("*.py")}
-    direct = {m: {a or b for a, b in _IMPORT.findall(src)} & sources.keys() for m, src in sources.items()}
+    files = _modules()
+    known = set(files)
+    direct = {m: _imports(m, f.read_text(encoding="utf-8"), known) for m, f in files.items()}
     closure = {}
-    for m in sources:
+    for m in files:
         seen, todo = {m}, [m]
         while todo:
             for d in direct[todo.pop()]:
@@ -43,48 +80,49 @@ def dependencies() -> dict[str, set[str]]:
     return closure
 
 
-def _probe() -> None:  # a function in this directory, for numba's cache locators
+def _probe() -> None:  # a function, for numba's cache locators
     pass
+
+
+def cache_dir_of(source: Path) -> Path | None:
+    """The directory numba caches the functions of ``source`` in (None if it has none)."""
+    from numba.core.caching import CacheImpl
+    for cls in CacheImpl._locator_classes:
+        locator = cls.from_function(_probe, str(source))
+        if locator is not None:
+            return Path(locator.get_cache_path())
+    return None
 
 
 def purge_stale_cache() -> list[str]:
     """Drop cached numba code whose dependencies changed; return the modules dropped."""
     try:
-        from numba.core.caching import CacheImpl
-        locator = None
-        for cls in CacheImpl._locator_classes:
-            locator = cls.from_function(_probe, str(_PKG / "_jitcache.py"))
-            if locator is not None:
-                break
-        if locator is None:
-            return []
-        cache_dir = Path(locator.get_cache_path())
-        cached = {}
-        if cache_dir.is_dir():
-            for f in cache_dir.iterdir():
-                if f.suffix in (".nbi", ".nbc"):
-                    cached.setdefault(f.name.split(".")[0], []).append(f)
-        if not cached:
-            return []
+        files = _modules()
         dropped = []
         source: dict[str, bytes] = {}  # each file read once
         for mod, deps in dependencies().items():
-            if mod not in cached:
+            cache_dir = cache_dir_of(files[mod])
+            if cache_dir is None or not cache_dir.is_dir():
+                continue
+            stem = files[mod].stem
+            cached = [f for f in cache_dir.iterdir()
+                      if f.suffix in (".nbi", ".nbc") and f.name.split(".")[0] == stem]
+            if not cached:
                 continue
             h = hashlib.sha1()
             for d in sorted(deps):
                 if d not in source:
-                    source[d] = (_PKG / f"{d}.py").read_bytes()
+                    source[d] = files[d].read_bytes()
                 h.update(d.encode())
                 h.update(source[d])
-            stamp = cache_dir / f"{mod}.deps.sha1"
+            stamp = cache_dir / f"{stem}.deps.sha1"
             if stamp.exists() and stamp.read_text() == h.hexdigest():
                 continue
             if stamp.exists():  # a dependency changed since these files were compiled
-                for f in cached[mod]:
+                for f in cached:
                     f.unlink()
                 dropped.append(mod)
             stamp.write_text(h.hexdigest())
         return dropped
-    except (OSError, ImportError, AttributeError, UnicodeDecodeError):
-        return []  # never let cache housekeeping break an import
+    except (OSError, ImportError, AttributeError, UnicodeDecodeError, SyntaxError):
+        return []  # never let cache housekeeping break a warm-up or a test run

@@ -9,7 +9,8 @@ takes several), and so would the first voronoi(), the first NavMesh, ... each on
 its own.  ``warm()`` calls every public feature on a tiny input, which compiles
 (or loads) every kernel behind it, in the cache location numba uses at run time
 (``__pycache__`` beside the sources, ``$NUMBA_CACHE_DIR``, or ``~/.cache/numba``
-when the package directory is read-only: the same rule as ``_jitcache``).
+when the package directory is read-only: the same rule as ``_jitcache``).  It first
+drops cached code compiled against modules edited since (``_jitcache.purge_stale_cache``).
 
 The features are run in a fixed list (``FEATURES``) and each is timed, so the
 output says where compile time goes.  ``not_cached()`` names the kernels that the
@@ -35,7 +36,7 @@ _PKG = Path(__file__).resolve().parent
 
 
 def _delaunay() -> None:
-    from .delaunay import Delaunay
+    from reference_impl.mesh.delaunay import Delaunay
     rng = np.random.default_rng(0)
     for pts in (rng.random((100, 2)), rng.random((5000, 2)),          # small and large ordering paths
                 np.array([(i % 5, i // 5) for i in range(25)], float),  # integer ties
@@ -46,7 +47,7 @@ def _delaunay() -> None:
 
 
 def _updates() -> None:
-    from .delaunay import Delaunay
+    from reference_impl.mesh.delaunay import Delaunay
     d = Delaunay(np.random.default_rng(1).random((30, 2)))
     d.insert((0.5, 0.25)), d.insert((0.5, 0.25)), d.insert((3.0, 3.0))
     d.vertex_neighbors(0), d.vertex_neighbors(1, strict=True)
@@ -56,8 +57,8 @@ def _updates() -> None:
 
 
 def _exact() -> None:
-    from .predicates import incircle, orient2d
-    from .predicates3d import insphere, insphere_batch, orient3d, orient3d_batch
+    from reference_impl.exact.predicates import incircle, orient2d
+    from reference_impl.exact.predicates3d import insphere, insphere_batch, orient3d, orient3d_batch
     for s in (1.0, 1e-300, 1e300):
         orient2d((0, 0), (s, s), (2 * s, 2 * s)), incircle((0, 0), (s, 0), (0, s), (s, s))
         orient3d((0, 0, 0), (s, 0, 0), (0, s, 0), (s, s, 0))
@@ -69,17 +70,17 @@ def _exact() -> None:
 
 
 def _voronoi() -> None:
-    from .hull import convex_hull
-    from .voronoi import voronoi
+    from reference_impl.structures.hull import convex_hull
+    from reference_impl.structures.voronoi import voronoi
     pts = np.random.default_rng(2).random((50, 2))
     voronoi(pts, (0, 0, 1, 1)), convex_hull(pts), convex_hull(pts, collinear=True)
     voronoi([(0.1, 0.1), (0.5, 0.5), (0.9, 0.9)], (0, 0, 1, 1))            # collinear sites
 
 
 def _proximity() -> None:
-    from .clearance import max_clearance
-    from .empty_circle import largest_empty_circle
-    from .proximity import closest_pair, euclidean_mst, gabriel_graph, relative_neighborhood_graph
+    from reference_impl.structures.clearance import max_clearance
+    from reference_impl.structures.empty_circle import largest_empty_circle
+    from reference_impl.structures.proximity import closest_pair, euclidean_mst, gabriel_graph, relative_neighborhood_graph
     grid = np.array([(i % 6, i // 6) for i in range(36)], float)       # equal lengths: the exact sort
     for pts in (np.random.default_rng(3).random((60, 2)), grid):
         euclidean_mst(pts), closest_pair(pts), gabriel_graph(pts), relative_neighborhood_graph(pts)
@@ -87,9 +88,9 @@ def _proximity() -> None:
 
 
 def _meshes() -> None:
-    from .constrained import ConstrainedDelaunay, constrained_delaunay
-    from .flips import apply_flips, flip_to_delaunay, laplacian_smooth, lawson_flip, mesh_quality, validate_triangulation
-    from .navmesh import NavMesh, polygon_triangulation
+    from reference_impl.structures.constrained import ConstrainedDelaunay, constrained_delaunay
+    from reference_impl.structures.flips import apply_flips, flip_to_delaunay, laplacian_smooth, lawson_flip, mesh_quality, validate_triangulation
+    from reference_impl.structures.navmesh import NavMesh, polygon_triangulation
     square = [(0, 0), (4, 0), (4, 4), (0, 4), (1, 1), (3, 3), (1, 3), (3, 1)]
     cd = ConstrainedDelaunay(square, [(4, 5)])
     cd.simplices, cd.neighbors, cd.constrained, cd.edges(), cd.constraint_edges()
@@ -105,15 +106,15 @@ def _meshes() -> None:
 
 
 def _dynamic() -> None:
-    from .dynamic import DynamicNetwork
+    from reference_impl.structures.dynamic import DynamicNetwork
     net = DynamicNetwork()
     ids = [net.join(x, y) for x, y in ((0, 0), (1, 0), (0, 1), (1, 1), (0.5, 0.4))]
     net.fail(ids[-1]), net.neighbors(ids[0]), net.links()
 
 
 def _space() -> None:
-    from .delaunay3d import Delaunay3D
-    from .spherical import SphericalDelaunay, lonlat_to_xyz
+    from reference_impl.mesh.delaunay3d import Delaunay3D
+    from reference_impl.structures.spherical import SphericalDelaunay, lonlat_to_xyz
     rng = np.random.default_rng(4)
     d3 = Delaunay3D(rng.random((60, 3)))
     d3.simplices, d3.neighbors, d3.hull_facets, d3.find_simplex((0.5, 0.5, 0.5))
@@ -123,8 +124,8 @@ def _space() -> None:
 
 
 def _checkers() -> None:
-    from .delaunay import Delaunay
-    from .verify import check_delaunay
+    from reference_impl.mesh.delaunay import Delaunay
+    from reference_impl.exact.verify import check_delaunay
     pts = np.random.default_rng(5).random((30, 2))
     check_delaunay(pts, Delaunay(pts).simplices)
 
@@ -141,6 +142,10 @@ def warm(progress: Callable[[str], None] | None = print) -> dict[str, float]:
 
     ``progress`` receives one line per feature as it finishes (``None``: silent).
     """
+    from reference_impl._jitcache import purge_stale_cache
+    dropped = purge_stale_cache()          # machine code compiled against since-edited modules
+    if progress and dropped:
+        progress(f"  (dropped the stale cache of {', '.join(dropped)})")
     seconds = {}
     for name, run in FEATURES.items():
         t = time.perf_counter()
@@ -155,13 +160,14 @@ def kernels() -> dict[str, object]:
     """Every numba dispatcher defined in the package: ``module.name`` -> dispatcher."""
     from numba.core.registry import CPUDispatcher
     found = {}
-    for f in sorted(_PKG.glob("*.py")):
-        if f.stem in ("__main__", "warmup"):
+    for f in sorted(_PKG.rglob("*.py")):
+        parts = f.relative_to(_PKG).with_suffix("").parts
+        if parts[0] in ("__main__", "warmup", "kit") or parts[-1] == "__init__" or "__pycache__" in parts:
             continue
-        mod = importlib.import_module(f"{__package__}.{f.stem}")
+        mod = importlib.import_module(".".join((__package__, *parts)))
         for name, obj in vars(mod).items():
             if isinstance(obj, CPUDispatcher) and obj.py_func.__module__ == mod.__name__:
-                found[f"{f.stem}.{name}"] = obj
+                found[f"{'.'.join(parts)}.{name}"] = obj
     return found
 
 

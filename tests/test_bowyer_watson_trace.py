@@ -3,7 +3,7 @@
     .venv/bin/python -m pytest tests/test_bowyer_watson_trace.py -q
 
 Every trace record is checked against an oracle that shares no code with the
-module: exact integer predicates from ``reference_impl.verify`` (and, for the
+module: exact integer predicates from ``reference_impl.exact.verify`` (and, for the
 tutorial's example, circumcentres computed with ``Fraction``).  The general
 correctness suite (shared with the fast ``Delaunay``) is ``test_delaunay_shared.py``.
 """
@@ -18,13 +18,13 @@ import numpy as np
 import pytest
 
 from pointsets import circle, collinear, grid, integer_circle, uniform, with_duplicates
-from reference_impl.bowyer_watson import (INFINITE, TUTORIAL_POINTS, Step, bowyer_watson,
+from reference_impl.teaching.bowyer_watson import (INFINITE, TUTORIAL_POINTS, Step, bowyer_watson,
                                           cavity_boundary, dry_run, insertion_order)
-from reference_impl.tutorial_bugs import (ALL_FIXES, EXHIBITS, RING_25, det_in_circumcircle, tutorial_det,
+from reference_impl.teaching.tutorial_bugs import (ALL_FIXES, EXHIBITS, RING_25, det_in_circumcircle, tutorial_det,
                                           epsilon_says_degenerate, naive_bowyer_watson,
                                           tutorial_boundary)
-from reference_impl.verify import check_delaunay, exact_coordinates, incircle_exact, orient_exact
-from reference_impl.predicates import incircle
+from reference_impl.exact.verify import check_delaunay, exact_coordinates, incircle_exact, orient_exact
+from reference_impl.exact.predicates import incircle
 
 # ----------------------------------------------------------------------------- oracles
 

@@ -18,7 +18,7 @@ from hypothesis import given, strategies as st
 
 import pointsets
 from reference_impl import Delaunay
-from reference_impl.verify import (check_delaunay, convex_hull_exact, exact_coordinates,
+from reference_impl.exact.verify import (check_delaunay, convex_hull_exact, exact_coordinates,
                                    orient_exact)
 from exact_oracle import canon
 
@@ -208,7 +208,7 @@ def test_jit_cache_works_when_the_package_directory_is_read_only(tmp_path):
 
 
 def test_hilbert_curve_visits_every_cell_with_unit_steps():
-    from reference_impl.ordering import hilbert_index
+    from reference_impl.mesh.ordering import hilbert_index
     for bits in (1, 2, 3, 5):
         m = 1 << bits
         pos = {hilbert_index(x, y, bits): (x, y) for x in range(m) for y in range(m)}
@@ -221,7 +221,7 @@ def test_hilbert_curve_visits_every_cell_with_unit_steps():
 @pytest.mark.parametrize("n", [500, 6000])          # one compiled call below 4096 points, numpy's sort above
 @pytest.mark.parametrize("scale", [1.0, 1.6e308])  # 1.6e308: the span overflows, keys come from scaled points
 def test_insertion_order_depends_only_on_the_point_set(n, scale):
-    from reference_impl.ordering import _order_keys, insertion_order
+    from reference_impl.mesh.ordering import _order_keys, insertion_order
     grid = pointsets.grid(10) / 9.0
     pts = np.vstack([pointsets.uniform(n, 3), grid, grid]) * scale  # duplicates too
     assert np.isfinite(pts).all()
@@ -241,28 +241,37 @@ def test_editing_a_dependency_drops_the_dependants_cache(tmp_path):
     pkg = tmp_path / "site" / "reference_impl"
     shutil.copytree(ROOT / "reference_impl", pkg, ignore=shutil.ignore_patterns("__pycache__"))
     env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path / "cache"), PYTHONPATH=str(pkg.parent))
-    probe = ("from reference_impl._jitcache import purge_stale_cache, _probe; "
-             "from numba.core.caching import UserProvidedCacheLocator as L; "
-             "print(L.from_function(_probe, __import__('reference_impl._jitcache').__file__).get_cache_path()); "
+    probe = ("import sys; from pathlib import Path; import reference_impl; "
+             "assert 'numba' not in sys.modules, 'importing the package loaded numba'; "
+             "from reference_impl._jitcache import cache_dir_of, purge_stale_cache; "
+             "root = Path(reference_impl.__file__).parent; "
+             "print(cache_dir_of(root / 'exact' / 'predicates.py')); print(cache_dir_of(root / 'mesh' / 'kernel.py')); "
              "print(sorted(purge_stale_cache()))")
 
     def run():
         out = subprocess.run([sys.executable, "-c", probe], env=env, cwd=tmp_path, capture_output=True,
                              text=True, timeout=300)
         assert out.returncode == 0, out.stderr
-        cache_dir, dropped = out.stdout.strip().splitlines()[-2:]
-        return Path(cache_dir), dropped
+        exact_dir, mesh_dir, dropped = out.stdout.strip().splitlines()[-3:]
+        return Path(exact_dir), Path(mesh_dir), dropped
 
-    cache_dir, _ = run()
-    cache_dir.mkdir(parents=True, exist_ok=True)
-    for name in ("_mesh.build-1.py311.nbi", "verify.x-1.py311.nbi", "predicates.orient2d_nb-1.py311.nbi"):
-        (cache_dir / name).write_text("")
-    run()                                                      # first sight: stamps written
-    assert (cache_dir / "_mesh.deps.sha1").exists()
-    assert (cache_dir / "_mesh.build-1.py311.nbi").exists()
-    with open(pkg / "expansion.py", "a") as f:
+    exact_dir, mesh_dir, _ = run()
+    assert exact_dir != mesh_dir                        # one cache directory per source directory
+    for d in (exact_dir, mesh_dir):
+        d.mkdir(parents=True, exist_ok=True)
+    files = [mesh_dir / "kernel.build-1.py311.nbi", exact_dir / "verify.x-1.py311.nbi",
+             exact_dir / "predicates.orient2d_nb-1.py311.nbi"]
+    for f in files:
+        f.write_text("")
+    _, _, dropped = run()                                       # first sight: stamps written
+    assert dropped == "[]"
+    assert (mesh_dir / "kernel.deps.sha1").exists() and files[0].exists()
+    _, _, dropped = run()                                       # nothing edited: nothing dropped
+    assert dropped == "[]" and all(f.exists() for f in files)
+    with open(pkg / "exact" / "expansion.py", "a") as f:
         f.write("\n# an edit\n")
-    run()                                  # importing the package purges (before the probe's own call)
-    assert not (cache_dir / "_mesh.build-1.py311.nbi").exists()         # _mesh uses expansion.py
-    assert not (cache_dir / "predicates.orient2d_nb-1.py311.nbi").exists()
-    assert (cache_dir / "verify.x-1.py311.nbi").exists()       # verify does not import expansion
+    _, _, dropped = run()
+    assert dropped == "['exact.predicates', 'mesh.kernel']"
+    assert not files[0].exists()                                # mesh/kernel.py uses expansion.py
+    assert not files[2].exists()
+    assert files[1].exists()                                    # verify does not import expansion

@@ -16,8 +16,9 @@ import pytest
 from hypothesis import given, strategies as st
 
 import pointsets
-from reference_impl import Delaunay, _mesh
-from reference_impl.verify import (check_delaunay, convex_hull_exact, exact_coordinates,
+from reference_impl import Delaunay
+from reference_impl.mesh import kernel as _mesh
+from reference_impl.exact.verify import (check_delaunay, convex_hull_exact, exact_coordinates,
                                    orient_exact)
 from exact_oracle import canon
 

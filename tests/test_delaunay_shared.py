@@ -1,7 +1,7 @@
 """One correctness suite for both Delaunay implementations: the teaching
 ``bowyer_watson`` and the fast ``Delaunay``.
 
-Oracles: the exact checker ``reference_impl.verify.check_delaunay`` (integer
+Oracles: the exact checker ``reference_impl.exact.verify.check_delaunay`` (integer
 arithmetic, proof in its docstring), a brute-force empty-circle check,
 ``scipy.spatial.Delaunay`` and the ``triangle`` package on general-position
 input (where the triangulation is unique, the triangle sets must be identical).
@@ -18,7 +18,7 @@ from hypothesis import given, strategies as st
 
 import pointsets
 from reference_impl import Delaunay
-from reference_impl.verify import (brute_force_empty_circles, check_delaunay,
+from reference_impl.exact.verify import (brute_force_empty_circles, check_delaunay,
                                    check_triangulation_size, convex_hull_exact,
                                    exact_coordinates)
 from exact_oracle import canon
@@ -29,7 +29,7 @@ def fast(points):
 
 
 def teaching(points):
-    from reference_impl.bowyer_watson import bowyer_watson
+    from reference_impl.teaching.bowyer_watson import bowyer_watson
     return bowyer_watson(points)
 
 

@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 from hypothesis import given, strategies as st
 
-from reference_impl.predicates import incircle, orient2d
+from reference_impl.exact.predicates import incircle, orient2d
 
 
 def _sign(v) -> int:

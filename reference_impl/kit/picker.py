@@ -30,9 +30,9 @@ from typing import Any, Callable, Mapping
 import ipywidgets as widgets
 import numpy as np
 
-from reference_impl.bowyer_watson import TUTORIAL_POINTS
-from reference_impl.delaunay import Delaunay
-from reference_impl.points import as_points
+from reference_impl.teaching.bowyer_watson import TUTORIAL_POINTS
+from reference_impl.mesh.delaunay import Delaunay
+from reference_impl.validate import as_points
 
 from .render import Canvas, draw_points, draw_triangles
 from .widget import KitWidget, button, png_image

@@ -31,11 +31,11 @@ from typing import Any, Callable, Sequence
 import ipywidgets as widgets
 import numpy as np
 
-from reference_impl.bowyer_watson import INFINITE, Step, bowyer_watson
-from reference_impl.delaunay import Delaunay
-from reference_impl.flips import apply_flips, lawson_flip
-from reference_impl.points import as_points
-from reference_impl.predicates import orient2d
+from reference_impl.teaching.bowyer_watson import INFINITE, Step, bowyer_watson
+from reference_impl.mesh.delaunay import Delaunay
+from reference_impl.structures.flips import apply_flips, lawson_flip
+from reference_impl.validate import as_points
+from reference_impl.exact.predicates import orient2d
 
 from .render import (COLORS, Canvas, draw_circumcircle, draw_edges, draw_points, draw_triangles,
                      filmstrip, fill_triangles, fit_bounds)
@@ -188,7 +188,7 @@ def scrambled_triangulation(points, flips: int | None = None, seed: int = 0) -> 
     (default: one per point) are flipped at random.
 
     >>> pts = [(0, 0), (4, 0), (4, 3), (0, 3), (2, 1.4)]
-    >>> from reference_impl.flips import validate_triangulation
+    >>> from reference_impl.structures.flips import validate_triangulation
     >>> len(validate_triangulation(pts, scrambled_triangulation(pts)))
     4
     """

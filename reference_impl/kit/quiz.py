@@ -27,9 +27,9 @@ from typing import Any, Callable, Iterable, Sequence
 import ipywidgets as widgets
 import numpy as np
 
-from reference_impl.bowyer_watson import INFINITE, Step, bowyer_watson
-from reference_impl.points import as_points
-from reference_impl.predicates import incircle, orient2d
+from reference_impl.teaching.bowyer_watson import INFINITE, Step, bowyer_watson
+from reference_impl.validate import as_points
+from reference_impl.exact.predicates import incircle, orient2d
 
 from .render import (COLORS, Canvas, draw_circumcircle, draw_edges, draw_points, draw_triangles,
                      fill_triangles, fit_bounds)

@@ -1,6 +1,6 @@
 """Wrong answer: the in-circle test is a float determinant compared with an epsilon (``det >
 1e-9``), as the original tutorial suggests for "near-zero" cases
-(reference_impl/tutorial_bugs.py); a large super-triangle, oriented triangles and a correct
+(reference_impl/teaching/tutorial_bugs.py); a large super-triangle, oriented triangles and a correct
 cavity boundary otherwise.
 
 Why it is wrong: a fixed threshold depends on the scale. At 1e-300 every determinant is below

@@ -1,4 +1,4 @@
-"""Wrong answer: the original tutorial's cavity boundary (reference_impl/tutorial_bugs.py), which
+"""Wrong answer: the original tutorial's cavity boundary (reference_impl/teaching/tutorial_bugs.py), which
 keeps one copy of an edge shared by two bad triangles (it should drop both). Exact predicates
 and a large super-triangle otherwise.
 

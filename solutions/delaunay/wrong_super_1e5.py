@@ -1,4 +1,4 @@
-"""Wrong answer: the original tutorial's fixed super-triangle (reference_impl/tutorial_bugs.py) at
+"""Wrong answer: the original tutorial's fixed super-triangle (reference_impl/teaching/tutorial_bugs.py) at
 +-1e5 (exact predicates otherwise, and a correct cavity boundary).
 
 Why it is wrong: a point outside the fixed super-triangle lies in no circumcircle, or in the

@@ -1,5 +1,5 @@
 """Wrong answer: the original tutorial's Bowyer-Watson transcribed faithfully
-(the same code, with the inputs on which each bug shows: reference_impl/tutorial_bugs.py).
+(the same code, with the inputs on which each bug shows: reference_impl/teaching/tutorial_bugs.py).
 
 Its bugs: the in-circle determinant is only right for counter-clockwise triangles but triangles
 are never oriented; the cavity boundary keeps an edge shared by two bad triangles (it skips the

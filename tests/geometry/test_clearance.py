@@ -1,4 +1,4 @@
-"""Tests for reference_impl.clearance.max_clearance against two independent oracles.
+"""Tests for reference_impl.structures.clearance.max_clearance against two independent oracles.
 
 Run:  .venv/bin/python -m pytest tests/geometry/test_clearance.py -q
 
@@ -28,9 +28,9 @@ import shapely
 from hypothesis import given, strategies as st
 from scipy.spatial import Voronoi
 
-import reference_impl.clearance as clearance_module
+import reference_impl.structures.clearance as clearance_module
 from pointsets import circle, collinear, grid, integer_circle, rotated_grid
-from reference_impl.clearance import max_clearance
+from reference_impl.structures.clearance import max_clearance
 
 
 # --------------------------------------------------------------------- oracle 1: retraction

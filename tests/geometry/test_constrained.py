@@ -1,4 +1,4 @@
-"""Tests for reference_impl.constrained: the constrained Delaunay triangulation.
+"""Tests for reference_impl.structures.constrained: the constrained Delaunay triangulation.
 
 Run:  .venv/bin/python -m pytest tests/geometry/test_constrained.py -q
 
@@ -18,8 +18,8 @@ import pytest
 import triangle
 from hypothesis import given, settings, strategies as st
 
-from reference_impl.constrained import ConstrainedDelaunay, constrained_delaunay
-from reference_impl.verify import (convex_hull_exact, exact_coordinates, incircle_exact,
+from reference_impl.structures.constrained import ConstrainedDelaunay, constrained_delaunay
+from reference_impl.exact.verify import (convex_hull_exact, exact_coordinates, incircle_exact,
                                    orient_exact)
 
 

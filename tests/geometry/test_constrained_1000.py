@@ -27,7 +27,7 @@ import triangle
 
 import pointsets
 from exact_oracle import exact, incircle, orient
-from reference_impl.constrained import ConstrainedDelaunay, constrained_delaunay
+from reference_impl.structures.constrained import ConstrainedDelaunay, constrained_delaunay
 
 CASES = 1000
 

@@ -2,7 +2,7 @@
 
 Run: .venv/bin/python -m pytest tests/geometry/test_delaunay3d.py -q
 
-Oracles: the exact validity checker ``reference_impl.verify.check_delaunay_3d``
+Oracles: the exact validity checker ``reference_impl.exact.verify.check_delaunay_3d``
 (Python integers; it shares no code with the numba kernel), a brute-force empty-sphere check on small sets,
 ``scipy.spatial.Delaunay`` (Qhull) on general-position sets, where the
 Delaunay tetrahedralisation is unique, and ``scipy.spatial.ConvexHull`` for the
@@ -18,9 +18,9 @@ import pytest
 from hypothesis import given, strategies as st
 from scipy.spatial import ConvexHull, Delaunay as QhullDelaunay
 
-from reference_impl.delaunay3d import (Delaunay3D, _Mesh, delaunay_3d, hilbert_index_3d,
+from reference_impl.mesh.delaunay3d import (Delaunay3D, _Mesh, delaunay_3d, hilbert_index_3d,
                                        insertion_order_3d)
-from reference_impl.verify import check_delaunay_3d
+from reference_impl.exact.verify import check_delaunay_3d
 
 
 # ----------------------------------------------------------------------------- exact checker
@@ -317,8 +317,8 @@ def test_arrays_grow_when_needed():
 
 
 def test_kernel_face_table_matches_the_predicates():
-    from reference_impl import _mesh3d
-    from reference_impl.predicates3d import FACES
+    from reference_impl.mesh import kernel3d as _mesh3d
+    from reference_impl.exact.predicates3d import FACES
     assert _mesh3d._F.tolist() == [list(f) for f in FACES]
 
 

@@ -30,7 +30,7 @@ import numpy as np
 import pytest
 from scipy.spatial import Delaunay as QhullDelaunay
 
-from reference_impl.delaunay3d import Delaunay3D, delaunay_3d
+from reference_impl.mesh.delaunay3d import Delaunay3D, delaunay_3d
 
 CASES = 1000
 

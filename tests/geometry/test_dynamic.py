@@ -1,4 +1,4 @@
-"""``reference_impl.dynamic``: the dynamic-network answer key against independent oracles.
+"""``reference_impl.structures.dynamic``: the dynamic-network answer key against independent oracles.
 
 * a brute-force oracle in exact integer arithmetic that shares no code with the library:
   nodes u and v are neighbours when their Voronoi cells share an edge of positive length,
@@ -20,8 +20,8 @@ import scipy.spatial
 from hypothesis import given, strategies as st
 
 from reference_impl import Delaunay
-from reference_impl.dynamic import DynamicNetwork, process
-from reference_impl.verify import exact_coordinates
+from reference_impl.structures.dynamic import DynamicNetwork, process
+from reference_impl.exact.verify import exact_coordinates
 
 
 # ------------------------------------------------------------------ the brute-force oracle

@@ -1,4 +1,4 @@
-"""Tests for reference_impl.empty_circle.largest_empty_circle against an exact brute force.
+"""Tests for reference_impl.structures.empty_circle.largest_empty_circle against an exact brute force.
 
 Run:  .venv/bin/python -m pytest tests/geometry/test_empty_circle.py -q
 
@@ -25,10 +25,10 @@ import numpy as np
 import pytest
 from hypothesis import given, strategies as st
 
-import reference_impl.empty_circle as ec_module
+import reference_impl.structures.empty_circle as ec_module
 from pointsets import circle, clusters, collinear, degenerate_sets, grid, integer_circle, rotated_grid
-from reference_impl.empty_circle import largest_empty_circle
-from reference_impl.verify import convex_hull_exact, exact_coordinates, orient_exact
+from reference_impl.structures.empty_circle import largest_empty_circle
+from reference_impl.exact.verify import convex_hull_exact, exact_coordinates, orient_exact
 
 
 def _exact_points(points):

@@ -1,11 +1,11 @@
-"""Tests of reference_impl.flips: Lawson flips, flip replay, Laplacian smoothing, mesh quality.
+"""Tests of reference_impl.structures.flips: Lawson flips, flip replay, Laplacian smoothing, mesh quality.
 
     .venv/bin/python -m pytest tests/geometry/test_flips.py -q
 
 Oracles: an independent flip replayer written here on Python integers (a dict
 of directed edges; convexity and the in-circle test decided exactly) checks that
 every flip Lawson reports is legal and illegal-before-flip, and the exact
-checker ``reference_impl.verify.check_delaunay`` checks the final
+checker ``reference_impl.exact.verify.check_delaunay`` checks the final
 triangulation.  Starting triangulations: fans of convex polygons, the
 ``triangle`` package's constrained (non-Delaunay) output, and random legal flips
 applied to a Delaunay triangulation.  The max-min angle property (which does not make
@@ -24,9 +24,9 @@ from hypothesis import given, settings, strategies as st
 
 import pointsets
 from reference_impl import Delaunay
-from reference_impl.flips import (apply_flips, flip_to_delaunay, laplacian_smooth, lawson_flip,
+from reference_impl.structures.flips import (apply_flips, flip_to_delaunay, laplacian_smooth, lawson_flip,
                                   mesh_quality, validate_triangulation)
-from reference_impl.verify import check_delaunay, exact_coordinates, incircle_exact, orient_exact
+from reference_impl.exact.verify import check_delaunay, exact_coordinates, incircle_exact, orient_exact
 from exact_oracle import canon
 
 

@@ -31,7 +31,7 @@ import pytest
 
 import pointsets
 from reference_impl import Delaunay
-from reference_impl.flips import laplacian_smooth, mesh_quality
+from reference_impl.structures.flips import laplacian_smooth, mesh_quality
 
 CASES = 1000
 

@@ -1,4 +1,4 @@
-"""reference_impl.free_space (exact, stdlib-only point/segment/path tests in a polygon with holes)
+"""reference_impl.exact.free_space (exact, stdlib-only point/segment/path tests in a polygon with holes)
 against an independent oracle: ``NavMesh.is_visible``, which walks segments through the
 constrained triangulation with the adaptive predicates (no code shared).
 
@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from reference_impl import NavMesh, shortest_path
-from reference_impl.free_space import path_length, path_problem, point_in_free_space, segment_in_free_space
+from reference_impl.exact.free_space import path_length, path_problem, point_in_free_space, segment_in_free_space
 
 ROOM = [(0, 0), (12, 0), (12, 8), (7, 8), (7, 5), (5, 5), (5, 8), (0, 8)]          # a notch in the top wall
 HOLES = [[(2, 2), (4, 2), (4, 4), (2, 4)], [(8, 1), (10, 1), (9, 3)], [(8, 4), (10, 4), (10, 6), (8, 6)]]

@@ -1,4 +1,4 @@
-"""Tests for reference_impl.hull.convex_hull against exact and library oracles.
+"""Tests for reference_impl.structures.hull.convex_hull against exact and library oracles.
 
 Run:  .venv/bin/python -m pytest tests/geometry/test_hull.py -q
 
@@ -15,10 +15,10 @@ import pytest
 from hypothesis import given, strategies as st
 from scipy.spatial import ConvexHull
 
-import reference_impl.hull as hull_module
+import reference_impl.structures.hull as hull_module
 from pointsets import degenerate_sets, flat_sets
-from reference_impl.hull import convex_hull
-from reference_impl.verify import convex_hull_exact, exact_coordinates, orient_exact
+from reference_impl.structures.hull import convex_hull
+from reference_impl.exact.verify import convex_hull_exact, exact_coordinates, orient_exact
 
 
 def brute_hull(points) -> tuple[set[int], set[int], bool]:

@@ -1,4 +1,4 @@
-"""Tests for reference_impl.navmesh: polygons with holes, triangulated, and shortest paths in them.
+"""Tests for reference_impl.structures.navmesh: polygons with holes, triangulated, and shortest paths in them.
 
 Run:  .venv/bin/python -m pytest tests/geometry/test_navmesh.py -q
 
@@ -25,8 +25,8 @@ import triangle
 from hypothesis import given, settings, strategies as st
 from shapely.geometry import LineString, Point, Polygon
 
-from reference_impl.navmesh import NavMesh, funnel, polygon_triangulation, shortest_path
-from reference_impl.verify import exact_coordinates, incircle_exact, orient_exact
+from reference_impl.structures.navmesh import NavMesh, funnel, polygon_triangulation, shortest_path
+from reference_impl.exact.verify import exact_coordinates, incircle_exact, orient_exact
 
 
 # ----------------------------------------------------------------------------- oracle

@@ -37,7 +37,7 @@ import triangle
 from shapely.geometry import LinearRing, Point, Polygon
 
 from exact_oracle import exact, incircle, orient
-from reference_impl.navmesh import polygon_triangulation, shortest_path
+from reference_impl.structures.navmesh import polygon_triangulation, shortest_path
 
 CASES = 1000
 

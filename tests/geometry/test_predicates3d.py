@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 from hypothesis import given, strategies as st
 
-from reference_impl.predicates3d import (FACES, exact_coordinates_3d, insphere, insphere_batch,
+from reference_impl.exact.predicates3d import (FACES, exact_coordinates_3d, insphere, insphere_batch,
                                          insphere_exact, orient3d, orient3d_batch, orient3d_exact)
 
 

@@ -1,4 +1,4 @@
-"""Tests of reference_impl.proximity: EMST, closest pair, Gabriel graph, relative neighbourhood graph.
+"""Tests of reference_impl.structures.proximity: EMST, closest pair, Gabriel graph, relative neighbourhood graph.
 
     .venv/bin/python -m pytest tests/geometry/test_proximity.py -q
 
@@ -25,9 +25,9 @@ from hypothesis import given, settings, strategies as st
 
 import pointsets
 from reference_impl import Delaunay
-from reference_impl.proximity import (closest_pair, dot_sign, euclidean_mst, gabriel_graph,
+from reference_impl.structures.proximity import (closest_pair, dot_sign, euclidean_mst, gabriel_graph,
                                       relative_neighborhood_graph, sq_dist_cmp)
-from reference_impl.verify import exact_coordinates
+from reference_impl.exact.verify import exact_coordinates
 
 
 # ----------------------------------------------------------------------------- the exact oracle

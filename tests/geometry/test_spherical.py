@@ -14,7 +14,7 @@ import pytest
 from hypothesis import given, strategies as st
 from scipy.spatial import ConvexHull
 
-from reference_impl.spherical import SphericalDelaunay, lonlat_to_xyz, spherical_delaunay
+from reference_impl.structures.spherical import SphericalDelaunay, lonlat_to_xyz, spherical_delaunay
 
 
 def int_points(points) -> list[tuple[int, int, int]]:

@@ -25,7 +25,7 @@ import numpy as np
 import pytest
 from scipy.spatial import ConvexHull
 
-from reference_impl.spherical import SphericalDelaunay, spherical_delaunay
+from reference_impl.structures.spherical import SphericalDelaunay, spherical_delaunay
 
 CASES = 1000
 

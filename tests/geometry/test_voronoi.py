@@ -1,4 +1,4 @@
-"""Tests for reference_impl.voronoi.voronoi against exact, shapely and scipy oracles.
+"""Tests for reference_impl.structures.voronoi.voronoi against exact, shapely and scipy oracles.
 
 Run:  .venv/bin/python -m pytest tests/geometry/test_voronoi.py -q
 
@@ -28,10 +28,10 @@ from hypothesis import given, strategies as st
 from scipy.spatial import Voronoi
 
 import importlib
-voronoi_module = importlib.import_module("reference_impl.voronoi")
+voronoi_module = importlib.import_module("reference_impl.structures.voronoi")
 from pointsets import degenerate_sets, flat_sets, nearly_collinear_hull
-from reference_impl.verify import exact_coordinates
-from reference_impl.voronoi import voronoi
+from reference_impl.exact.verify import exact_coordinates
+from reference_impl.structures.voronoi import voronoi
 
 F = Fraction
 

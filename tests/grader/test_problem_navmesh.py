@@ -15,7 +15,7 @@ import pytest
 import yaml
 
 from grader.problems import load_problem
-from reference_impl import free_space
+from reference_impl.exact import free_space
 
 P = load_problem("navmesh")
 CHK, GEN = P.checker, P.generator

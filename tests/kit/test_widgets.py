@@ -22,12 +22,12 @@ from scipy.spatial import Delaunay as ScipyDelaunay
 
 from exact_oracle import canon, exact, incircle as exact_incircle, orient as exact_orient
 from reference_impl import bowyer_watson
-from reference_impl.flips import validate_triangulation
+from reference_impl.structures.flips import validate_triangulation
 from reference_impl.kit import MeasurePanel, PointPicker, PredictReveal, PredictRevealMany, StepPlayer, pick, quick_mode
 from reference_impl.kit.player import BOWYER_WATSON_PSEUDOCODE, scrambled_triangulation
 from reference_impl.kit.quiz import bad_triangles_quiz, locally_delaunay_quiz
 from reference_impl.kit.render import Canvas, png_size
-from reference_impl.verify import check_delaunay
+from reference_impl.exact.verify import check_delaunay
 
 TUTORIAL = [(1, 1), (3, 2), (5, 1), (4, 4)]
 

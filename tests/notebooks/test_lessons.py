@@ -47,7 +47,7 @@ def warm_numba_cache():
     import numpy as np
 
     from reference_impl import Delaunay, voronoi
-    from reference_impl.flips import lawson_flip, mesh_quality
+    from reference_impl.structures.flips import lawson_flip, mesh_quality
 
     from reference_impl import (ConstrainedDelaunay, DynamicNetwork, NavMesh, SphericalDelaunay, delaunay_3d,
                                 euclidean_mst)

@@ -1,7 +1,7 @@
 """Checker for `closest-pair`: accepts any pair of distinct indices at the minimum distance (exact).
 
 The squared distance of the received pair, computed exactly from the input doubles (Python
-integers after one common power-of-two scaling, ``reference_impl/verify.py``), must equal the
+integers after one common power-of-two scaling, ``reference_impl/exact/verify.py``), must equal the
 reference pair's. The grader loads this file with the shared loader
 (``grader/checker_runtime.py``); ``export-kattis`` makes it a self-contained Kattis output validator.
 

@@ -8,7 +8,7 @@ Two uses, one logic:
   as an output validator: ``python3 checker.py input answer feedback_dir < team_output`` (exit 42
   accept, 43 reject, the reason in ``feedback_dir/judgemessage.txt``).
 
-The exact test is ``reference_impl.verify.check_delaunay_3d`` (Python integers, standard library
+The exact test is ``reference_impl.exact.verify.check_delaunay_3d`` (Python integers, standard library
 only), named in ``LIBRARY`` with the shared readers of ``reference_impl/judge_io.py``: the shared
 loader (``grader/checker_runtime.py``) binds both, and ``export-kattis`` embeds them.
 

@@ -8,7 +8,7 @@ Two uses, one logic:
   output validator: ``python3 checker.py input answer feedback_dir < team_output`` (exit 42
   accept, 43 reject, the reason in ``feedback_dir/judgemessage.txt``).
 
-The exact test itself is ``reference_impl.verify.check_delaunay`` (Python integers), and the
+The exact test itself is ``reference_impl.exact.verify.check_delaunay`` (Python integers), and the
 text formats and strict typing are ``reference_impl.judge_io``'s, both named in ``LIBRARY``: the
 shared loader (``grader/checker_runtime.py``) binds it without importing the rest
 of ``reference_impl`` (which would pull in numba), and ``export-kattis`` embeds it together with

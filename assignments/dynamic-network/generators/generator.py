@@ -13,7 +13,7 @@
   its centre: the centre is linked to all of them, then fails (the ring is cocircular: no
   diagonals), rejoins twice at the same spot, and one copy fails again.
 
-``solve(operations)`` is ``reference_impl.dynamic.process`` (grader side only).
+``solve(operations)`` is ``reference_impl.structures.dynamic.process`` (grader side only).
 
     python assignments/dynamic-network/generators/generator.py '{"kind": "ring", "r": 5}' 3
 
@@ -91,8 +91,8 @@ def generate_args(case: dict, seed: int) -> list:
 
 
 def solve(operations: list) -> list:
-    """The answers of ``reference_impl.dynamic.process`` (ids, "ok"/"error", sorted lists, counts)."""
-    from reference_impl.dynamic import process
+    """The answers of ``reference_impl.structures.dynamic.process`` (ids, "ok"/"error", sorted lists, counts)."""
+    from reference_impl.structures.dynamic import process
 
     return process(operations)
 

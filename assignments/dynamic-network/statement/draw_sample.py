@@ -1,7 +1,7 @@
 """Draw the statement's picture (sample.png): the sample's links before and after node 1 fails.
 
 Run from the checkout: .venv/bin/python assignments/dynamic-network/statement/draw_sample.py
-The links come from reference_impl.dynamic.DynamicNetwork; the picture is committed (small PNG).
+The links come from reference_impl.structures.dynamic.DynamicNetwork; the picture is committed (small PNG).
 
 Example:
     python assignments/dynamic-network/statement/draw_sample.py    # writes .../statement/sample.png
@@ -15,7 +15,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from reference_impl.dynamic import DynamicNetwork  # noqa: E402
+from reference_impl.structures.dynamic import DynamicNetwork  # noqa: E402
 
 HERE = Path(__file__).resolve().parent
 

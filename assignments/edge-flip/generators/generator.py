@@ -152,7 +152,7 @@ def generate_args(case: dict, seed: int) -> list:
         from reference_impl import Delaunay
         tris = Delaunay(pts).simplices.tolist() if len(pts) >= 3 else []
     elif start == "fan":
-        from reference_impl.verify import convex_hull_exact
+        from reference_impl.exact.verify import convex_hull_exact
         hull = convex_hull_exact(_exact(pts), keep_collinear=True)
         tris = [[hull[0], hull[i], hull[i + 1]] for i in range(1, len(hull) - 1)] if len(hull) >= 3 else []
     else:

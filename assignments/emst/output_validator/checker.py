@@ -2,7 +2,7 @@
 
 Exact: the answer must be a spanning tree of all n indices (n - 1 edges, no cycle), and its sorted
 list of squared edge lengths, computed exactly from the input doubles (Python integers after one
-common power-of-two scaling, ``reference_impl/verify.py``), must equal the reference tree's. Every
+common power-of-two scaling, ``reference_impl/exact/verify.py``), must equal the reference tree's. Every
 minimum spanning tree has the same sorted lengths, and a spanning tree with those lengths has the
 minimum total, so this accepts exactly the optimal trees, whatever the ties. The grader loads this
 file with the shared loader (``grader/checker_runtime.py``); ``export-kattis`` makes it a

@@ -2,7 +2,7 @@
 length is optimal within a relative tolerance of 1e-9.
 
 Exact where it decides: every point and segment of the received path is tested exactly (Fractions
-of the doubles, ``reference_impl/free_space.py``) against the closed free space (inside or on the
+of the doubles, ``reference_impl/exact/free_space.py``) against the closed free space (inside or on the
 boundary, not strictly inside a hole: walls may be touched and followed). The length (``hypot`` per
 segment, ``fsum``) must satisfy ``L <= L_ref * (1 + 1e-9)``; ``None`` ("no path") is right exactly
 when the reference is ``None`` (start or goal outside the free space). A path has at most

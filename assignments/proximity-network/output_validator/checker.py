@@ -5,7 +5,7 @@ with diameter ij, that is (r - i) . (r - j) > 0 for every other point r. The gra
 the received edge set (either endpoint order, any edge order) must equal the reference's, with
 repeated points named by their smallest index. A wrong answer's message names a missing edge, or an
 extra edge together with a point inside (or on) its disc, found with exact integer arithmetic
-(``reference_impl/verify.py`` scaling). The grader loads this file with the shared loader
+(``reference_impl/exact/verify.py`` scaling). The grader loads this file with the shared loader
 (``grader/checker_runtime.py``); ``export-kattis`` makes it a self-contained Kattis output validator.
 
 Example:

@@ -1,7 +1,7 @@
 """The incremental 3D Delaunay kernel (numba): Bowyer-Watson on flat tetrahedron arrays.
 
 This is the engine behind ``reference_impl.Delaunay3D`` (read ``delaunay3d.py``
-for the public API).  It mirrors the 2D kernel ``_mesh.py``:
+for the public API).  It mirrors the 2D kernel ``kernel.py``:
 
 * vertices are ``0 .. n-1`` (their insertion rank); ``INF = -1`` is the
   *infinite vertex*.  Every convex-hull facet has a *ghost tetrahedron* joining
@@ -42,7 +42,7 @@ returns ``GROW`` without touching the mesh and the caller enlarges them.
 Driven from Python by ``delaunay3d._Mesh`` (points already in insertion order):
 
 >>> import numpy as np
->>> from reference_impl.delaunay3d import _Mesh
+>>> from reference_impl.mesh.delaunay3d import _Mesh
 >>> m = _Mesh(np.array([[0., 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1], [0.875, 0.875, 0.875]]))
 >>> simplices, neighbors, _, hull = m.extract()
 >>> simplices.tolist()                 # three tetrahedra around the edge 0-4
@@ -55,8 +55,8 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from .predicates import orient2d_nb
-from .predicates3d import insphere_nb, orient3d_nb
+from reference_impl.exact.predicates import orient2d_nb
+from reference_impl.exact.predicates3d import insphere_nb, orient3d_nb
 
 INF = -1
 DEAD = -2

@@ -45,8 +45,8 @@ import numba
 import numpy as np
 from numba import njit
 
-from .expansion import EPSILON, add, diff, mul, negate, two_diff
-from .verify import exact_coordinates_3d, insphere_exact, orient3d_exact  # noqa: F401 (re-exported)
+from reference_impl.exact.expansion import EPSILON, add, diff, mul, negate, two_diff
+from reference_impl.exact.verify import exact_coordinates_3d, insphere_exact, orient3d_exact  # noqa: F401 (re-exported)
 
 O3D_ERRBOUND_B = (3.0 + 28.0 * EPSILON) * EPSILON
 O3D_ERRBOUND_C = 64.0 * EPSILON * EPSILON

@@ -41,7 +41,7 @@ import numba
 import numpy as np
 from numba import njit
 
-from .expansion import EPSILON, add, diff, mul, negate, two_diff
+from reference_impl.exact.expansion import EPSILON, add, diff, mul, negate, two_diff
 
 __all__ = ["orient2d", "incircle", "orient2d_nb", "incircle_nb", "workspace", "WORKSPACE_SIZE"]
 
@@ -77,13 +77,13 @@ def workspace() -> np.ndarray:
 
 # --------------------------------------------------------------------- exact python fallback
 def _orient_python(ax, ay, bx, by, cx, cy) -> int:
-    from .verify import exact_coordinates, orient_exact
+    from reference_impl.exact.verify import exact_coordinates, orient_exact
     a, b, c = exact_coordinates([(ax, ay), (bx, by), (cx, cy)])
     return orient_exact(a, b, c)
 
 
 def _incircle_python(ax, ay, bx, by, cx, cy, dx, dy) -> int:
-    from .verify import exact_coordinates, incircle_exact
+    from reference_impl.exact.verify import exact_coordinates, incircle_exact
     a, b, c, d = exact_coordinates([(ax, ay), (bx, by), (cx, cy), (dx, dy)])
     return incircle_exact(a, b, c, d)
 

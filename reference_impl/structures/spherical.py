@@ -1,6 +1,6 @@
 """Spherical Delaunay triangulation of points on the sphere (longitude/latitude or directions).
 
-    python -c "from reference_impl.spherical import spherical_delaunay; print(spherical_delaunay([(0, 0), (90, 0), (180, 0), (0, 90), (0, -90)]))"
+    python -c "from reference_impl.structures.spherical import spherical_delaunay; print(spherical_delaunay([(0, 0), (90, 0), (180, 0), (0, 90), (0, -90)]))"
 
 For points on a sphere, a triangle is spherical-Delaunay (its circumcircle on
 the sphere is empty) exactly when the plane through its three points has no
@@ -40,10 +40,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from . import _mesh3d as K
-from .delaunay3d import _Mesh, _representatives, insertion_order_3d
-from .points import as_points
-from .predicates3d import orient3d_batch
+from reference_impl.mesh import kernel3d as K
+from reference_impl.mesh.delaunay3d import _Mesh, _representatives, insertion_order_3d
+from reference_impl.validate import as_points
+from reference_impl.exact.predicates3d import orient3d_batch
 
 __all__ = ["SphericalDelaunay", "spherical_delaunay", "lonlat_to_xyz"]
 

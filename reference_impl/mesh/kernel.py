@@ -34,7 +34,7 @@ Insertion of point p (Bowyer-Watson):
 3. *fill*: connect p to every cavity boundary edge; the new triangles reuse the
    dead slots (there are always two more new triangles than dead ones).
 
-Removal of vertex v lives in ``_mesh_remove.py``: delete its star and
+Removal of vertex v lives in ``removal.py``: delete its star and
 re-triangulate the hole with the Delaunay triangulation of its neighbours,
 restricted to the hole (that module says why this is right, ties included).
 
@@ -46,8 +46,8 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from .ordering import small_order
-from .predicates import WORKSPACE_SIZE, incircle_nb, orient2d_nb
+from reference_impl.mesh.ordering import small_order
+from reference_impl.exact.predicates import WORKSPACE_SIZE, incircle_nb, orient2d_nb
 
 INF = -1
 RECORD = 8  # int32 entries per triangle record

@@ -1,10 +1,10 @@
 """The teaching Bowyer-Watson: readable Python that follows the tutorial's pseudocode, corrected.
 
-Run the examples:  python -m doctest reference_impl/bowyer_watson.py
-Print the dry run: python -c "from reference_impl.bowyer_watson import dry_run; print(dry_run())"
+Run the examples:  python -m doctest reference_impl/teaching/bowyer_watson.py
+Print the dry run: python -c "from reference_impl.teaching.bowyer_watson import dry_run; print(dry_run())"
 
 This is the version students read (the fast one is ``Delaunay`` in
-``delaunay.py``).  It keeps the tutorial's four moves for every point p:
+``mesh/delaunay.py``).  It keeps the tutorial's four moves for every point p:
 
 1. find the *bad* triangles: those whose circumcircle contains p;
 2. find the *cavity boundary*: the edges around the union of the bad triangles;
@@ -21,7 +21,7 @@ In pseudocode (compare with the original code in ``tutorial_bugs.py``)::
     return the triangles that do not touch the vertex at infinity
 
 and fixes the four bugs of the original tutorial's code (reproduced in
-``reference_impl/tutorial_bugs.py``):
+``reference_impl/teaching/tutorial_bugs.py``):
 
 Fix 1, orientation.  The in-circle determinant says "inside" only for a
 counter-clockwise triangle (for a clockwise one its sign flips).  Every
@@ -95,9 +95,9 @@ from typing import Iterable
 
 import numpy as np
 
-from reference_impl.ordering import insertion_order as brio_order
-from reference_impl.points import as_points
-from reference_impl.predicates import incircle, orient2d
+from reference_impl.mesh.ordering import insertion_order as brio_order
+from reference_impl.validate import as_points
+from reference_impl.exact.predicates import incircle, orient2d
 
 __all__ = ["bowyer_watson", "Step", "dry_run", "cavity_boundary", "insertion_order",
            "INFINITE", "TUTORIAL_POINTS"]

@@ -45,7 +45,7 @@ How a query works, and why the answer is optimal:
 
 Lengths are summed in floating point; every decision about geometry is exact.
 
-Run the doctests:  python -m doctest reference_impl/navmesh.py
+Run the doctests:  python -m doctest reference_impl/structures/navmesh.py
 
 >>> room = [(0, 0), (10, 0), (10, 10), (0, 10)]
 >>> pillar = [(4, 4), (6, 4), (6, 6), (4, 6)]
@@ -66,10 +66,10 @@ import numpy as np
 from numba import njit
 from numpy.typing import ArrayLike
 
-from .constrained import _ahead, _fmt, _run_cdt, _slot, _third, fan_search, orient_many
-from .delaunay import Delaunay
-from .points import as_point, as_points
-from .predicates import orient2d, orient2d_nb, workspace
+from reference_impl.structures.constrained import _ahead, _fmt, _run_cdt, _slot, _third, fan_search, orient_many
+from reference_impl.mesh.delaunay import Delaunay
+from reference_impl.validate import as_point, as_points
+from reference_impl.exact.predicates import orient2d, orient2d_nb, workspace
 
 __all__ = ["NavMesh", "shortest_path", "funnel", "PolygonTriangulation", "polygon_triangulation"]
 

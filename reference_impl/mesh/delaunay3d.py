@@ -1,6 +1,6 @@
 """Delaunay3D: the robust 3D Delaunay tetrahedralisation (numba-compiled Bowyer-Watson).
 
-    python -c "from reference_impl.delaunay3d import delaunay_3d; print(delaunay_3d([(0,0,0),(1,0,0),(0,1,0),(0,0,1)]))"
+    python -c "from reference_impl.mesh.delaunay3d import delaunay_3d; print(delaunay_3d([(0,0,0),(1,0,0),(0,1,0),(0,0,1)]))"
 
 The data model extends the 2D one: ``points`` (n, 3) float64; ``simplices``
 (m, 4) point indices, every tetrahedron *positively oriented* in Shewchuk's
@@ -9,7 +9,7 @@ plane of the first three seen counter-clockwise from above; equivalently the
 face ``FACES[k]`` opposite vertex k is counter-clockwise seen from outside);
 ``neighbors`` (m, 4) with ``neighbors[t, k]`` the tetrahedron across the face
 opposite vertex k, -1 on the hull; ``hull_facets`` (h, 3) the convex hull's
-triangles, counter-clockwise seen from outside.  The kernel is ``_mesh3d.py``;
+triangles, counter-clockwise seen from outside.  The kernel is ``kernel3d.py``;
 the predicates are ``predicates3d.py``.
 
 Input rules (as in 2D): duplicates are merged (``index_map[i]`` is the smallest
@@ -45,10 +45,10 @@ import math
 import numpy as np
 from numba import njit
 
-from . import _mesh3d as K
-from .ordering import _mix
-from .points import as_points
-from .predicates3d import workspace3d
+from reference_impl.mesh import kernel3d as K
+from reference_impl.mesh.ordering import _mix
+from reference_impl.validate import as_points
+from reference_impl.exact.predicates3d import workspace3d
 
 __all__ = ["Delaunay3D", "delaunay_3d", "insertion_order_3d", "hilbert_index_3d"]
 
@@ -342,7 +342,7 @@ def delaunay_3d(points) -> np.ndarray:
     >>> t = delaunay_3d(pts)
     >>> t.tolist()
     [[0, 3, 2, 1]]
-    >>> from reference_impl.predicates3d import orient3d
+    >>> from reference_impl.exact.predicates3d import orient3d
     >>> orient3d(*(pts[i] for i in t[0]))
     1
     """

@@ -1,7 +1,7 @@
 """The original Bowyer-Watson tutorial's code (the one this course corrects), reproduced on
 purpose: an exhibit of what goes wrong.
 
-Run the examples:  python -m doctest reference_impl/tutorial_bugs.py
+Run the examples:  python -m doctest reference_impl/teaching/tutorial_bugs.py
 
 Do not use this code to triangulate anything; use ``bowyer_watson`` (the
 teaching version) or ``Delaunay`` (the fast one).  ``naive_bowyer_watson``
@@ -22,7 +22,7 @@ Each failure is shown below on a concrete input (``EXHIBITS``) and confirmed by
 the exact checker ``verify.check_delaunay``; the course's tests repeat these
 checks and show that ``bowyer_watson`` gets every one of them right.
 
->>> from reference_impl.verify import check_delaunay
+>>> from reference_impl.exact.verify import check_delaunay
 >>> def check(name, **kw):
 ...     pts = EXHIBITS[name]
 ...     return check_delaunay(pts, naive_bowyer_watson(pts, **kw))
@@ -94,8 +94,8 @@ from typing import Iterable, Sequence
 
 import numpy as np
 
-from reference_impl.points import as_points
-from reference_impl.predicates import incircle, orient2d
+from reference_impl.validate import as_points
+from reference_impl.exact.predicates import incircle, orient2d
 
 __all__ = ["naive_bowyer_watson", "RING_25", "tutorial_det", "det_in_circumcircle", "tutorial_boundary",
            "epsilon_says_degenerate", "SUPER_TRIANGLE", "ALL_FIXES", "EXHIBITS"]
@@ -202,7 +202,7 @@ def naive_bowyer_watson(points, *, fix: Iterable[str] = ()) -> np.ndarray:
     the overlap (mistake 3): the second point's cavity has two triangles, and
     the edge between them is kept.
 
-    >>> from reference_impl.verify import check_delaunay
+    >>> from reference_impl.exact.verify import check_delaunay
     >>> pts = [(7, 4), (8, 9), (2, 4)]
     >>> naive_bowyer_watson(pts).tolist()                # the same triangle twice
     [[0, 1, 2], [0, 1, 2]]

@@ -5,7 +5,7 @@
 The data model is scipy's and Delaunator's: ``points`` (n, 2) float64,
 ``simplices`` (m, 3) point indices counter-clockwise, ``neighbors`` (m, 3) with
 ``neighbors[t, k]`` the triangle opposite vertex k (-1 on the hull), ``hull``
-the hull vertices counter-clockwise.  The kernel is in ``_mesh.py``; the
+the hull vertices counter-clockwise.  The kernel is in ``kernel.py``; the
 insertion order in ``ordering.py``; the exact predicates in ``predicates.py``.
 
 Input rules: duplicates are merged (``index_map[i]`` is the index that point i
@@ -17,7 +17,7 @@ input order, degenerate inputs included.
 
 Updates: ``insert(p)`` adds a point (its index is the next row of ``points``),
 ``remove(i)`` deletes point i in time proportional to its number of neighbours
-(Devillers' setting: delete the star, re-triangulate the hole; see ``_mesh.py``).
+(Devillers' setting: delete the star, re-triangulate the hole; see ``kernel.py``).
 Indices never change: ``points`` keeps every row, removed ones included, and a
 removed index appears in no output (``index_map[i] == -1``, ``live[i]`` False).
 After updates the triangulation is Delaunay for the live points; where
@@ -39,10 +39,12 @@ import numbers
 
 import numpy as np
 
-from . import _mesh, _mesh_remove
-from .ordering import SMALL, insertion_order
-from .points import as_point, as_points
-from .predicates import orient2d_nb
+from reference_impl.mesh import kernel as _mesh
+
+from reference_impl.mesh import removal as _mesh_remove
+from reference_impl.mesh.ordering import SMALL, insertion_order
+from reference_impl.validate import as_point, as_points
+from reference_impl.exact.predicates import orient2d_nb
 
 __all__ = ["Delaunay"]
 
@@ -410,7 +412,7 @@ class Delaunay:
         """Remove point i (an index into ``points``); the triangulation stays Delaunay.
 
         Cost: proportional to the number of Delaunay neighbours of the point (its star is
-        deleted and the hole re-triangulated, see ``_mesh.py``); the first call also
+        deleted and the hole re-triangulated, see ``kernel.py``); the first call also
         makes an O(n) index.  Indices of other points do not change.  Duplicates: each
         index is a point of its own; removing one copy of a location leaves the location
         in the triangulation, now named by the smallest remaining index, and the location

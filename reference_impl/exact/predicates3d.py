@@ -26,7 +26,7 @@ as the 2D predicates (``predicates.py``):
    2**150 (insphere), so nothing can overflow, and the permanent is above
    2**-600 (2**-450), with an extra absolute term of 2**-850 (2**-600) in the
    bound that covers every rounding error an underflowing product can add;
-2. otherwise the exact stages in ``_predicates3d_exact.py``: an error-free float
+2. otherwise the exact stages in ``stages3d.py``: an error-free float
    evaluation when the differences are exact small multiples of one power of
    two (grids: cheap ties), then Shewchuk-style stages B and C on the rounded
    differences (exact expansion arithmetic from ``expansion.py``, compressed),
@@ -52,11 +52,11 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from ._predicates3d_exact import (WORKSPACE3D_SIZE, _isp_det_perm, _o3_det_perm,
+from reference_impl.exact.stages3d import (WORKSPACE3D_SIZE, _isp_det_perm, _o3_det_perm,
                                   exact_coordinates_3d, insphere_exact, insphere_exact_stage,
                                   orient3d_exact, orient3d_exact_stage)
-from .expansion import EPSILON
-from .points import as_points
+from reference_impl.exact.expansion import EPSILON
+from reference_impl.validate import as_points
 
 __all__ = ["orient3d", "insphere", "orient3d_batch", "insphere_batch", "orient3d_nb",
            "insphere_nb", "workspace3d", "exact_coordinates_3d", "orient3d_exact",

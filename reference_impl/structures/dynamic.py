@@ -42,7 +42,7 @@ from typing import Any, Iterable, Sequence
 
 import numpy as np
 
-from .delaunay import Delaunay
+from reference_impl.mesh.delaunay import Delaunay
 
 __all__ = ["DynamicNetwork", "process"]
 

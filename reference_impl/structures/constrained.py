@@ -29,7 +29,7 @@ included) do not depend on the order of the segments or of the points.
 
 ``navmesh.polygon_triangulation`` (polygons with holes) is built on this module.
 
-Run the doctests:  python -m doctest reference_impl/constrained.py
+Run the doctests:  python -m doctest reference_impl/structures/constrained.py
 
 >>> cdt = ConstrainedDelaunay([(0, 0), (4, 0), (4, 4), (0, 4), (1, 2), (3, 2)], [(0, 2)])
 >>> [0, 2] in cdt.constraint_edges().tolist()
@@ -43,9 +43,9 @@ import numpy as np
 from numba import njit
 from numpy.typing import ArrayLike
 
-from .delaunay import Delaunay
-from .points import as_index_rows, as_points
-from .predicates import incircle_nb, orient2d_nb, workspace
+from reference_impl.mesh.delaunay import Delaunay
+from reference_impl.validate import as_index_rows, as_points
+from reference_impl.exact.predicates import incircle_nb, orient2d_nb, workspace
 
 __all__ = ["ConstrainedDelaunay", "constrained_delaunay"]
 

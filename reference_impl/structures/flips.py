@@ -1,6 +1,6 @@
 """Edge flips and mesh improvement: Lawson's flip algorithm, Laplacian smoothing, mesh quality.
 
-    python -c "from reference_impl.flips import flip_to_delaunay; print(flip_to_delaunay([(0,0),(2,0),(2,1),(0,1)], [(0,1,2),(0,2,3)]))"
+    python -c "from reference_impl.structures.flips import flip_to_delaunay; print(flip_to_delaunay([(0,0),(2,0),(2,1),(0,1)], [(0,1,2),(0,2,3)]))"
 
 * ``lawson_flip(points, triangles)`` turns any triangulation of the points into
   a Delaunay one by flipping, one at a time, interior edges that are not
@@ -39,9 +39,9 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from .delaunay import Delaunay
-from .points import as_index_rows, as_points
-from .predicates import WORKSPACE_SIZE, incircle_nb, orient2d_nb
+from reference_impl.mesh.delaunay import Delaunay
+from reference_impl.validate import as_index_rows, as_points
+from reference_impl.exact.predicates import WORKSPACE_SIZE, incircle_nb, orient2d_nb
 
 __all__ = ["validate_triangulation", "lawson_flip", "flip_to_delaunay", "apply_flips",
            "laplacian_smooth", "mesh_quality"]
@@ -142,7 +142,7 @@ def validate_triangulation(points, triangles) -> np.ndarray:
     """Check that ``triangles`` triangulate ``points``; return them as (m, 3) int64 in a
     canonical order (each rotated to start at its smallest index, rows sorted).
 
-    Conditions (sufficient, see ``reference_impl.verify``): every triangle strictly
+    Conditions (sufficient, see ``reference_impl.exact.verify``): every triangle strictly
     counter-clockwise; no directed edge used twice; the edges with a triangle on
     one side only are exactly the convex hull cycle (collinear hull points
     included); every distinct point is a vertex.  Duplicate indices become their

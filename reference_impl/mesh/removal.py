@@ -2,7 +2,7 @@
 
 Used by ``Delaunay.remove`` and ``Delaunay.vertex_neighbors`` (see ``delaunay.py``);
 the mesh layout (32-byte triangle records, ghost triangles, ``INF``) is described
-in ``_mesh.py``.  The comment below explains the method and why it is right with
+in ``kernel.py``.  The comment below explains the method and why it is right with
 cocircular ties.
 """
 from __future__ import annotations
@@ -10,8 +10,8 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from ._mesh import (DEAD, INF, RECORD, STATE_SIZE, S_LAST, S_NTRI, S_STAMP, _is_ghost, extract, insert, seed)
-from .predicates import incircle_nb, orient2d_nb
+from reference_impl.mesh.kernel import (DEAD, INF, RECORD, STATE_SIZE, S_LAST, S_NTRI, S_STAMP, _is_ghost, extract, insert, seed)
+from reference_impl.exact.predicates import incircle_nb, orient2d_nb
 
 
 # ============================================================================ removal

@@ -2,10 +2,10 @@
 
 Use it from Python::
 
-    from reference_impl.clearance import max_clearance
+    from reference_impl.structures.clearance import max_clearance
     r = max_clearance(obstacles, start, goal)
 
-or run the examples: ``python -m pytest --doctest-modules reference_impl/clearance.py``.
+or run the examples: ``python -m pytest --doctest-modules reference_impl/structures/clearance.py``.
 
 >>> max_clearance([(0, 0), (2, 0), (2, 2), (0, 2)], start=(1, 1), goal=(5, 1))   # leave the square
 1.0
@@ -71,8 +71,8 @@ import numpy as np
 from numba import njit
 from numpy.typing import ArrayLike
 
-from .delaunay import Delaunay
-from .points import as_point, as_points
+from reference_impl.mesh.delaunay import Delaunay
+from reference_impl.validate import as_point, as_points
 
 __all__ = ["max_clearance"]
 

@@ -2,11 +2,11 @@
 
 Use it from Python::
 
-    from reference_impl.hull import convex_hull
+    from reference_impl.structures.hull import convex_hull
     convex_hull(points)                    # strict hull: corner points only
     convex_hull(points, collinear=True)    # also the points lying on hull edges
 
-or run the examples: ``python -m pytest --doctest-modules reference_impl/hull.py``.
+or run the examples: ``python -m pytest --doctest-modules reference_impl/structures/hull.py``.
 
 >>> convex_hull([(0, 0), (2, 0), (1, 0), (2, 2), (0, 2), (1, 1)]).tolist()
 [0, 1, 3, 4]
@@ -41,8 +41,8 @@ import numpy as np
 from numba import njit
 from numpy.typing import ArrayLike
 
-from .points import as_points
-from .predicates import CCW_ERRBOUND_A, orient2d_nb, workspace
+from reference_impl.validate import as_points
+from reference_impl.exact.predicates import CCW_ERRBOUND_A, orient2d_nb, workspace
 
 __all__ = ["convex_hull"]
 

@@ -17,7 +17,7 @@ Conventions (the invariants every function here keeps):
 
 Never compile this with ``fastmath``: re-association destroys the error terms.
 
-Example (run ``python -m doctest reference_impl/expansion.py``):
+Example (run ``python -m doctest reference_impl/exact/expansion.py``):
 
 >>> import numpy as np
 >>> h = np.empty(4)

@@ -1,6 +1,6 @@
 """Proximity graphs from the Delaunay triangulation: EMST, closest pair, Gabriel graph, RNG.
 
-    python -c "from reference_impl.proximity import euclidean_mst; print(euclidean_mst([(0,0),(1,0),(0,2)]))"
+    python -c "from reference_impl.structures.proximity import euclidean_mst; print(euclidean_mst([(0,0),(1,0),(0,2)]))"
 
 Every one of these graphs is a subgraph of the Delaunay graph, in a chain:
 
@@ -42,9 +42,9 @@ import numba
 import numpy as np
 from numba import njit
 
-from .delaunay import Delaunay
-from .expansion import EPSILON, add, diff, mul, negate, two_diff, two_product, two_sum
-from .points import as_points
+from reference_impl.mesh.delaunay import Delaunay
+from reference_impl.exact.expansion import EPSILON, add, diff, mul, negate, two_diff, two_product, two_sum
+from reference_impl.validate import as_points
 
 __all__ = ["euclidean_mst", "closest_pair", "gabriel_graph", "relative_neighborhood_graph"]
 

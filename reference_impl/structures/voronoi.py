@@ -2,10 +2,10 @@
 
 Use it from Python::
 
-    from reference_impl.voronoi import voronoi
+    from reference_impl.structures.voronoi import voronoi
     cells = voronoi(points, bbox=(xmin, ymin, xmax, ymax))   # one polygon per input point
 
-or run the examples: ``python -m pytest --doctest-modules reference_impl/voronoi.py``.
+or run the examples: ``python -m pytest --doctest-modules reference_impl/structures/voronoi.py``.
 
 >>> cells = voronoi([(0, 0), (2, 0)], (-1, -1, 3, 1))
 >>> cells[0].tolist()
@@ -50,8 +50,8 @@ import numpy as np
 from numba import njit
 from numpy.typing import ArrayLike
 
-from .delaunay import Delaunay
-from .points import as_points
+from reference_impl.mesh.delaunay import Delaunay
+from reference_impl.validate import as_points
 
 __all__ = ["voronoi", "as_bbox"]
 

@@ -2,10 +2,10 @@
 
 Use it from Python::
 
-    from reference_impl.empty_circle import largest_empty_circle
+    from reference_impl.structures.empty_circle import largest_empty_circle
     cx, cy, r = largest_empty_circle(points)
 
-or run the examples: ``python -m pytest --doctest-modules reference_impl/empty_circle.py``.
+or run the examples: ``python -m pytest --doctest-modules reference_impl/structures/empty_circle.py``.
 
 >>> largest_empty_circle([(0, 0), (4, 0), (4, 4), (0, 4)])
 (2.0, 2.0, 2.8284271247461903)
@@ -54,26 +54,26 @@ import numpy as np
 from numba import njit
 from numpy.typing import ArrayLike
 
-from .delaunay import Delaunay
-from .expansion import EPSILON
-from .hull import convex_hull
-from .points import as_points
-from .predicates import orient2d_nb, workspace
-from .voronoi import _pow2_exponent, circumcentres, delaunay_adjacency
+from reference_impl.mesh.delaunay import Delaunay
+from reference_impl.exact.expansion import EPSILON
+from reference_impl.structures.hull import convex_hull
+from reference_impl.validate import as_points
+from reference_impl.exact.predicates import orient2d_nb, workspace
+from reference_impl.structures.voronoi import _pow2_exponent, circumcentres, delaunay_adjacency
 
 __all__ = ["largest_empty_circle"]
 
 
 # --------------------------------------------------------------------- exact walk decisions
 def _dot_sign_exact(ux, uy, vx, vy, sx, sy, qx, qy) -> int:
-    from .verify import exact_coordinates
+    from reference_impl.exact.verify import exact_coordinates
     (ux, uy), (vx, vy), (sx, sy), (qx, qy) = exact_coordinates([(ux, uy), (vx, vy), (sx, sy), (qx, qy)])
     d = (vx - ux) * (qx - sx) + (vy - uy) * (qy - sy)
     return (d > 0) - (d < 0)
 
 
 def _first_crossing_exact(ux, uy, vx, vy, sx, sy, ax, ay, bx, by) -> int:
-    from .verify import exact_coordinates
+    from reference_impl.exact.verify import exact_coordinates
     (ux, uy), (vx, vy), (sx, sy), (ax, ay), (bx, by) = exact_coordinates(
         [(ux, uy), (vx, vy), (sx, sy), (ax, ay), (bx, by)])
     s2 = (sx - ux) ** 2 + (sy - uy) ** 2

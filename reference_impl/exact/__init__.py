@@ -1,0 +1,10 @@
+"""Exact arithmetic: the predicates every geometric decision goes through, and the checkers.
+
+- ``expansion``: Shewchuk's floating-point expansions (two_sum, two_product, ...), numba.
+- ``predicates``: ``orient2d`` and ``incircle``, adaptive and exact for any finite doubles.
+- ``predicates3d`` with ``stages3d``: ``orient3d`` and ``insphere``, the same way.
+- ``verify``: exact checkers in Python integers (stdlib only: the judge's checkers load it).
+- ``free_space``: exact point, segment and path tests in a polygon with holes (stdlib only).
+
+Nothing here imports the mesh or the structures built on it.
+"""
