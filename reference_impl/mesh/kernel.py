@@ -8,15 +8,16 @@ the public API.  The mesh, in the style of Delaunator:
   *infinite vertex*: every convex-hull edge (u, v) has a *ghost triangle*
   (v, u, INF) outside it, so the outside of the hull is triangulated too and no
   super-triangle (with its coordinate limits) is needed;
-* one flat int32 array ``M`` holds an aligned 32-byte record per triangle t
-  (two records per cache line, never one split across two):
-  ``M[8*t + k]`` (k = 0, 1, 2) is vertex k, counter-clockwise;
-  ``M[8*t + 3 + k]`` is the triangle across the edge opposite vertex k, that
+* one flat int32 array ``M`` holds an aligned 32-byte record of ``RECORD = 8``
+  fields per triangle t (two records per cache line, never one split across two);
+  the fields are named by their offsets in the record:
+  ``M[RECORD*t + VTX + k]`` (k = 0, 1, 2) is vertex k, counter-clockwise;
+  ``M[RECORD*t + NBR + k]`` is the triangle across the edge opposite vertex k, that
   is across edge (vertex k+1, vertex k+2) (indices mod 3).  Every triangle has
   three neighbours, because ghosts close the surface;
-  ``M[8*t + 6]`` is a scratch mark for the cavity search; ``M[8*t + 7]`` is unused
-  (``remove`` uses it in its scratch mesh only);
-* a dead triangle slot has ``M[8*t] == DEAD`` (``remove`` keeps the records dense,
+  ``M[RECORD*t + MARK]`` is a scratch mark for the cavity search; ``M[RECORD*t + SPARE]``
+  is unused (``remove`` uses it in its scratch mesh only);
+* a dead triangle slot has ``M[RECORD*t + VTX] == DEAD`` (``remove`` keeps the records dense,
   so slots ``0 .. state[S_NTRI]-1`` are all alive);
 * ``start_of[v + 1]`` is scratch for ``insert``; once ``init_vertex_map`` has run it
   is also a triangle incident to v, kept so by ``remove`` and by ``insert`` (for the
@@ -50,8 +51,14 @@ from reference_impl.mesh.ordering import small_order
 from reference_impl.exact.predicates import WORKSPACE_SIZE, incircle_nb, orient2d_nb
 
 INF = -1
-RECORD = 8  # int32 entries per triangle record
 DEAD = -2
+
+# the triangle record: RECORD int32 fields, at these offsets (numba folds them into constants)
+RECORD = 8
+VTX = 0      # VTX + k: vertex k (counter-clockwise)
+NBR = 3      # NBR + k: the triangle across the edge opposite vertex k
+MARK = 6     # scratch mark of the cavity search
+SPARE = 7    # unused by insertion; removal's scratch mesh keeps a destination slot here
 
 # state array fields
 S_NTRI, S_STAMP, S_LAST, S_NDEAD = 0, 1, 2, 3
@@ -61,15 +68,16 @@ STATE_SIZE = 8
 
 
 @njit(cache=True, inline="always")
-def _is_ghost(M, t):
-    return M[8 * t] == INF or M[8 * t + 1] == INF or M[8 * t + 2] == INF
+def is_ghost(M, t):
+    """Whether triangle t has the infinite vertex (lies outside the convex hull)."""
+    return M[RECORD * t + VTX] == INF or M[RECORD * t + VTX + 1] == INF or M[RECORD * t + VTX + 2] == INF
 
 
 @njit(cache=True, inline="always")
 def _in_conflict(M, t, P, px, py, w):
-    a = M[8 * t]
-    b = M[8 * t + 1]
-    c = M[8 * t + 2]
+    a = M[RECORD * t + VTX]
+    b = M[RECORD * t + VTX + 1]
+    c = M[RECORD * t + VTX + 2]
     if c == INF:
         u, v = a, b
     elif a == INF:
@@ -91,8 +99,8 @@ def _in_conflict(M, t, P, px, py, w):
 def real_neighbour_of_ghost(M, t):
     """The real triangle across the hull edge of ghost t (t itself if it is real)."""
     for k in range(3):
-        if M[8 * t + k] == INF:
-            return M[8 * t + 3 + k]
+        if M[RECORD * t + VTX + k] == INF:
+            return M[RECORD * t + NBR + k]
     return t
 
 
@@ -108,20 +116,20 @@ def locate(M, P, px, py, start, w, state):
     while True:
         moved = False
         for k in range(3):
-            o = M[8 * t + 3 + k]
+            o = M[RECORD * t + NBR + k]
             if o == prev:
                 continue
             k1 = k + 1 if k < 2 else 0      # (k + 1) % 3 without a division: 3-5% of a build
             k2 = k1 + 1 if k1 < 2 else 0
-            u = M[8 * t + k1]
-            v = M[8 * t + k2]
+            u = M[RECORD * t + VTX + k1]
+            v = M[RECORD * t + VTX + k2]
             if orient2d_nb(P[u, 0], P[u, 1], P[v, 0], P[v, 1], px, py, w) < 0:
                 state[S_STEPS] += 1
                 prev = t
                 t = o
                 moved = True
                 break
-        if not moved or _is_ghost(M, t):
+        if not moved or is_ghost(M, t):
             return t
 
 
@@ -146,15 +154,15 @@ def insert(p, P, M, stack, bad, ba, bb, bo, start_of, state, w):
     px = P[p, 0]
     py = P[p, 1]
     t = locate(M, P, px, py, state[S_LAST], w, state)
-    if not _is_ghost(M, t):
+    if not is_ghost(M, t):
         for k in range(3):
-            v = M[8 * t + k]
+            v = M[RECORD * t + VTX + k]
             if P[v, 0] == px and P[v, 1] == py:
                 return v
     # --- cavity: depth-first search from t (which is in conflict) -------------
     state[S_STAMP] += 1
     stamp = state[S_STAMP]
-    M[8 * t + 6] = stamp
+    M[RECORD * t + MARK] = stamp
     bad[0] = t
     nbad = 1
     stack[0] = t
@@ -164,8 +172,8 @@ def insert(p, P, M, stack, bad, ba, bb, bo, start_of, state, w):
         top -= 1
         s = stack[top]
         for k in range(3):
-            o = M[8 * s + 3 + k]
-            mo = M[8 * o + 6]
+            o = M[RECORD * s + NBR + k]
+            mo = M[RECORD * o + MARK]
             if mo == stamp:
                 continue
             if mo == -stamp:
@@ -174,17 +182,17 @@ def insert(p, P, M, stack, bad, ba, bb, bo, start_of, state, w):
                 state[S_TESTS] += 1
                 conflict = _in_conflict(M, o, P, px, py, w)
             if conflict:
-                M[8 * o + 6] = stamp
+                M[RECORD * o + MARK] = stamp
                 bad[nbad] = o
                 nbad += 1
                 stack[top] = o
                 top += 1
             else:
-                M[8 * o + 6] = -stamp
+                M[RECORD * o + MARK] = -stamp
                 k1 = k + 1 if k < 2 else 0
                 k2 = k1 + 1 if k1 < 2 else 0
-                ba[nb] = M[8 * s + k1]
-                bb[nb] = M[8 * s + k2]
+                ba[nb] = M[RECORD * s + VTX + k1]
+                bb[nb] = M[RECORD * s + VTX + k2]
                 bo[nb] = o
                 nb += 1
     state[S_BAD] += nbad
@@ -195,26 +203,26 @@ def insert(p, P, M, stack, bad, ba, bb, bo, start_of, state, w):
         b = bb[i]
         o = bo[i]
         s = _new_slot(M, state, bad, nbad, i)
-        M[8 * s] = a
-        M[8 * s + 1] = b
-        M[8 * s + 2] = p
-        M[8 * s + 3 + 2] = o
+        M[RECORD * s + VTX] = a
+        M[RECORD * s + VTX + 1] = b
+        M[RECORD * s + VTX + 2] = p
+        M[RECORD * s + NBR + 2] = o
         # the outside triangle o now faces s across edge (b, a)
         for j in range(3):
-            x = M[8 * o + j]
+            x = M[RECORD * o + VTX + j]
             if x != a and x != b:
-                M[8 * o + 3 + j] = s
+                M[RECORD * o + NBR + j] = s
                 break
         start_of[a + 1] = s
-        M[8 * s + 6] = 0
+        M[RECORD * s + MARK] = 0
         if a != INF and b != INF:
             last_real = s
         bo[i] = s  # reuse: bo now holds the new triangle of boundary edge i
     for i in range(nb):
         s = bo[i]
         s2 = start_of[bb[i] + 1]   # the new triangle (b, c, p) that follows (a, b, p)
-        M[8 * s + 3] = s2
-        M[8 * s2 + 3 + 1] = s
+        M[RECORD * s + NBR] = s2
+        M[RECORD * s2 + NBR + 1] = s
     state[S_LAST] = last_real
     return -1
 
@@ -224,14 +232,14 @@ def _link_brute(M, ts):
     # link a handful of triangles by their shared edges (used to seed the mesh)
     for i in ts:
         for k in range(3):
-            u = M[8 * i + (k + 1) % 3]
-            v = M[8 * i + (k + 2) % 3]
+            u = M[RECORD * i + VTX + (k + 1) % 3]
+            v = M[RECORD * i + VTX + (k + 2) % 3]
             for j in ts:
                 if j == i:
                     continue
                 for m in range(3):
-                    if M[8 * j + (m + 1) % 3] == v and M[8 * j + (m + 2) % 3] == u:
-                        M[8 * i + 3 + k] = j
+                    if M[RECORD * j + VTX + (m + 1) % 3] == v and M[RECORD * j + VTX + (m + 2) % 3] == u:
+                        M[RECORD * i + NBR + k] = j
 
 
 @njit(cache=True)
@@ -247,9 +255,9 @@ def seed(a, b, c, P, M, state, w):
         u = vs[k]
         v = vs[(k + 1) % 3]
         g = k + 1
-        M[8 * g] = v
-        M[8 * g + 1] = u
-        M[8 * g + 2] = INF
+        M[RECORD * g + VTX] = v
+        M[RECORD * g + VTX + 1] = u
+        M[RECORD * g + VTX + 2] = INF
     _link_brute(M, np.arange(4))
     state[S_NTRI] = 4
     state[S_LAST] = 0
@@ -335,7 +343,7 @@ def extract(M, ntri, label):
     out_of = np.empty(ntri, dtype=np.int64)
     m = 0
     for t in range(ntri):
-        if M[8 * t] != DEAD and not _is_ghost(M, t):
+        if M[RECORD * t + VTX] != DEAD and not is_ghost(M, t):
             out_of[t] = m
             m += 1
         else:
@@ -345,7 +353,7 @@ def extract(M, ntri, label):
         r = out_of[t]
         if r >= 0:
             for k in range(3):
-                simp[r, k] = label[M[8 * t + k]]
+                simp[r, k] = label[M[RECORD * t + VTX + k]]
     return simp, out_of
 
 
@@ -357,7 +365,7 @@ def extract_neighbors(M, ntri, out_of, m):
         r = out_of[t]
         if r >= 0:
             for k in range(3):
-                neig[r, k] = out_of[M[8 * t + 3 + k]]
+                neig[r, k] = out_of[M[RECORD * t + NBR + k]]
     return neig
 
 
@@ -369,13 +377,13 @@ def hull_cycle(M, ntri, nverts, label):
     first = -1
     count = 0
     for t in range(ntri):
-        if M[8 * t] == DEAD:
+        if M[RECORD * t + VTX] == DEAD:
             continue
         for k in range(3):
-            if M[8 * t + k] == INF:
+            if M[RECORD * t + VTX + k] == INF:
                 # ghost (x, y, INF) in cyclic order sits on hull edge y -> x
-                x = M[8 * t + (k + 1) % 3]
-                y = M[8 * t + (k + 2) % 3]
+                x = M[RECORD * t + VTX + (k + 1) % 3]
+                y = M[RECORD * t + VTX + (k + 2) % 3]
                 nxt[y] = x
                 first = y
                 count += 1
@@ -417,7 +425,7 @@ def find(M, P, Q, start, w, state):
     t = start
     for i in range(Q.shape[0]):
         t = locate(M, P, Q[i, 0], Q[i, 1], t, w, state)
-        if _is_ghost(M, t):
+        if is_ghost(M, t):
             res[i] = -1
             t = real_neighbour_of_ghost(M, t)
         else:

@@ -10,7 +10,8 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from reference_impl.mesh.kernel import (DEAD, INF, RECORD, STATE_SIZE, S_LAST, S_NTRI, S_STAMP, _is_ghost, extract, insert, seed)
+from reference_impl.mesh.kernel import (DEAD, INF, MARK, NBR, RECORD, SPARE, STATE_SIZE, S_LAST, S_NTRI, S_STAMP, VTX,
+                                        extract, insert, is_ghost, seed)
 from reference_impl.exact.predicates import incircle_nb, orient2d_nb
 
 
@@ -78,7 +79,7 @@ REMOVED, FLAT, FAILED = 0, 1, 2   # results of ``remove``
 @njit(cache=True, inline="always")
 def _index_of(M, t, x):
     for k in range(3):
-        if M[8 * t + k] == x:
+        if M[RECORD * t + VTX + k] == x:
             return k
     return -1
 
@@ -87,9 +88,9 @@ def _index_of(M, t, x):
 def _face(M, o, x, y, s):
     # triangle o (which has edge x-y) now faces s across that edge
     for j in range(3):
-        z = M[8 * o + j]
+        z = M[RECORD * o + VTX + j]
         if z != x and z != y:
-            M[8 * o + 3 + j] = s
+            M[RECORD * o + NBR + j] = s
             return
 
 
@@ -97,10 +98,10 @@ def _face(M, o, x, y, s):
 def init_vertex_map(M, ntri, start_of):
     """start_of[v + 1] = a triangle incident to v, for every vertex of the mesh (INF too)."""
     for t in range(ntri):
-        if M[8 * t] == DEAD:
+        if M[RECORD * t + VTX] == DEAD:
             continue
         for k in range(3):
-            start_of[M[8 * t + k] + 1] = t
+            start_of[M[RECORD * t + VTX + k] + 1] = t
 
 
 @njit(cache=True)
@@ -112,7 +113,7 @@ def degree(M, start_of, v):
     while True:
         k = _index_of(M, t, v)
         d += 1
-        t = M[8 * t + 3 + (k + 1) % 3]   # across edge (v, next link vertex): counter-clockwise
+        t = M[RECORD * t + NBR + (k + 1) % 3]   # across edge (v, next link vertex): counter-clockwise
         if t == t0:
             return d
 
@@ -126,9 +127,9 @@ def link(M, start_of, v):
     i = 0
     while True:
         k = _index_of(M, t, v)
-        out[i] = M[8 * t + (k + 1) % 3]
+        out[i] = M[RECORD * t + VTX + (k + 1) % 3]
         i += 1
-        t = M[8 * t + 3 + (k + 1) % 3]
+        t = M[RECORD * t + NBR + (k + 1) % 3]
         if t == t0:
             return out
 
@@ -139,18 +140,18 @@ def _free_slot(M, f, state, start_of):
     last = state[S_NTRI] - 1
     if f != last:
         for j in range(RECORD):
-            M[8 * f + j] = M[8 * last + j]
+            M[RECORD * f + j] = M[RECORD * last + j]   # the whole record
         for k in range(3):
-            o = M[8 * f + 3 + k]
+            o = M[RECORD * f + NBR + k]
             for j in range(3):
-                if M[8 * o + 3 + j] == last:
-                    M[8 * o + 3 + j] = f
-            x = M[8 * f + k]
+                if M[RECORD * o + NBR + j] == last:
+                    M[RECORD * o + NBR + j] = f
+            x = M[RECORD * f + VTX + k]
             if start_of[x + 1] == last:
                 start_of[x + 1] = f
         if state[S_LAST] == last:
             state[S_LAST] = f
-    M[8 * last] = DEAD
+    M[RECORD * last + VTX] = DEAD
     state[S_NTRI] = last
 
 
@@ -167,9 +168,9 @@ def _find_edge(M, start_of, x, y):
     t = t0
     while True:
         k = _index_of(M, t, c)
-        if M[8 * t + (k + nxt) % 3] == other:
+        if M[RECORD * t + VTX + (k + nxt) % 3] == other:
             return t
-        t = M[8 * t + 3 + (k + 1) % 3]
+        t = M[RECORD * t + NBR + (k + 1) % 3]
         if t == t0:
             return -1
 
@@ -194,12 +195,12 @@ def remove(v, P, M, stack, bad, ba, bb, bo, start_of, pos, state, w):
     h = -1                                  # position of INF in the link, if v is on the hull
     for i in range(d):
         k = _index_of(M, t, v)
-        lk[i] = M[8 * t + (k + 1) % 3]
+        lk[i] = M[RECORD * t + VTX + (k + 1) % 3]
         tris[i] = t
-        outer[i] = M[8 * t + 3 + k]         # across boundary edge l_i -> l_{i+1}
+        outer[i] = M[RECORD * t + NBR + k]         # across boundary edge l_i -> l_{i+1}
         if lk[i] == INF:
             h = i
-        t = M[8 * t + 3 + (k + 1) % 3]
+        t = M[RECORD * t + NBR + (k + 1) % 3]
     if h > 0:                               # rotate so that INF is l_0
         lk = np.concatenate((lk[h:], lk[:h]))
         tris = np.concatenate((tris[h:], tris[:h]))
@@ -219,29 +220,29 @@ def remove(v, P, M, stack, bad, ba, bb, bo, start_of, pos, state, w):
             break
     if j2 < 0:
         # (an interior vertex's link surrounds it, so only a hull vertex gets here)
-        if _is_ghost(M, outer[1]):
+        if is_ghost(M, outer[1]):
             return FLAT                     # nothing but the chain's line is left
         # fan from INF: ghost (INF, l_i, l_{i+1}) on the new hull edge l_{i+1} -> l_i
         for i in range(1, d - 1):
             s = tris[i - 1]
-            M[8 * s] = INF
-            M[8 * s + 1] = lk[i]
-            M[8 * s + 2] = lk[i + 1]
-            M[8 * s + 6] = 0
+            M[RECORD * s + VTX] = INF
+            M[RECORD * s + VTX + 1] = lk[i]
+            M[RECORD * s + VTX + 2] = lk[i + 1]
+            M[RECORD * s + MARK] = 0
         for i in range(1, d - 1):
             s = tris[i - 1]
             o = outer[i]
-            M[8 * s + 3] = o
+            M[RECORD * s + NBR] = o
             _face(M, o, lk[i], lk[i + 1], s)
             if i + 1 <= d - 2:
-                M[8 * s + 4] = tris[i]
+                M[RECORD * s + NBR + 1] = tris[i]
             else:
-                M[8 * s + 4] = outer[d - 1]
+                M[RECORD * s + NBR + 1] = outer[d - 1]
                 _face(M, outer[d - 1], lk[d - 1], INF, s)
             if i >= 2:
-                M[8 * s + 5] = tris[i - 2]
+                M[RECORD * s + NBR + 2] = tris[i - 2]
             else:
-                M[8 * s + 5] = outer[0]
+                M[RECORD * s + NBR + 2] = outer[0]
                 _face(M, outer[0], INF, lk[1], s)
             start_of[lk[i] + 1] = s
             start_of[lk[i + 1] + 1] = s
@@ -267,7 +268,7 @@ def remove(v, P, M, stack, bad, ba, bb, bo, start_of, pos, state, w):
         pos[0] = -2                         # INF is not on the boundary
     for t in range(top):
         for k in range(3):
-            start_of[L[8 * t + k] + 1] = t
+            start_of[L[RECORD * t + VTX + k] + 1] = t
 
     # --- 5. flood fill from the boundary edges: the scratch triangles inside the hole ------
     # Every boundary edge is a scratch edge (see above), so the fill cannot leak; the hole has
@@ -280,8 +281,8 @@ def remove(v, P, M, stack, bad, ba, bb, bo, start_of, pos, state, w):
         t = _find_edge(L, start_of, lk[i], lk[(i + 1) % d])
         if t < 0:
             return FAILED
-        if L[8 * t + 6] != stamp:
-            L[8 * t + 6] = stamp
+        if L[RECORD * t + MARK] != stamp:
+            L[RECORD * t + MARK] = stamp
             stack[sp] = t
             sp += 1
     while sp > 0:
@@ -290,13 +291,13 @@ def remove(v, P, M, stack, bad, ba, bb, bo, start_of, pos, state, w):
         fill[nfill] = s
         nfill += 1
         for k in range(3):
-            x = L[8 * s + (k + 1) % 3]
-            y = L[8 * s + (k + 2) % 3]
+            x = L[RECORD * s + VTX + (k + 1) % 3]
+            y = L[RECORD * s + VTX + (k + 2) % 3]
             if pos[y + 1] == (pos[x + 1] + 1) % d:
                 continue                    # a boundary edge: the outside is beyond
-            o = L[8 * s + 3 + k]
-            if L[8 * o + 6] != stamp:
-                L[8 * o + 6] = stamp
+            o = L[RECORD * s + NBR + k]
+            if L[RECORD * o + MARK] != stamp:
+                L[RECORD * o + MARK] = stamp
                 stack[sp] = o
                 sp += 1
     if nfill != d - 2:
@@ -304,25 +305,25 @@ def remove(v, P, M, stack, bad, ba, bb, bo, start_of, pos, state, w):
 
     # --- 6. copy into the star's slots, stitch to the outside, free the two spare slots ----
     for j in range(nfill):
-        L[8 * fill[j] + 7] = tris[j]        # destination slot
+        L[RECORD * fill[j] + SPARE] = tris[j]        # destination slot
     for j in range(nfill):
         t = fill[j]
         s = tris[j]
         for k in range(3):
-            M[8 * s + k] = L[8 * t + k]
+            M[RECORD * s + VTX + k] = L[RECORD * t + VTX + k]
         for k in range(3):
-            x = L[8 * t + (k + 1) % 3]
-            y = L[8 * t + (k + 2) % 3]
+            x = L[RECORD * t + VTX + (k + 1) % 3]
+            y = L[RECORD * t + VTX + (k + 2) % 3]
             px = pos[x + 1]
             if pos[y + 1] == (px + 1) % d:
                 o = outer[px]
-                M[8 * s + 3 + k] = o
+                M[RECORD * s + NBR + k] = o
                 _face(M, o, x, y, s)
             else:
-                M[8 * s + 3 + k] = L[8 * L[8 * t + 3 + k] + 7]
-        M[8 * s + 6] = 0
+                M[RECORD * s + NBR + k] = L[RECORD * L[RECORD * t + NBR + k] + SPARE]
+        M[RECORD * s + MARK] = 0
         for k in range(3):
-            start_of[M[8 * s + k] + 1] = s
+            start_of[M[RECORD * s + VTX + k] + 1] = s
     if not hull:
         start_of[0] = inf_slot
     state[S_LAST] = tris[0]
