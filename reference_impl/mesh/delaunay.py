@@ -42,6 +42,7 @@ import numpy as np
 from reference_impl.mesh import kernel as _mesh
 
 from reference_impl.mesh import removal as _mesh_remove
+from reference_impl.mesh import status
 from reference_impl.mesh.ordering import SMALL, insertion_order
 from reference_impl.validate import as_point, as_points
 from reference_impl.exact.predicates import orient2d_nb
@@ -453,8 +454,8 @@ class Delaunay:
         self._free.append(site)
         code = _mesh_remove.remove(site, self._P, self._M, self._stack, self._bad, self._ba, self._bb,
                             self._bo, self._start_of, self._pos, self._state, self._w)
-        if code != _mesh_remove.REMOVED:
-            if code == _mesh_remove.FAILED:
+        if code != status.OK:
+            if code == status.LOST:            # a sanity check failed: the mesh is untouched
                 type(self).fallbacks += 1
             self._build()                     # flat now (or, never expected, a failed check)
 

@@ -46,6 +46,7 @@ import numpy as np
 from numba import njit
 
 from reference_impl.mesh import kernel3d as K
+from reference_impl.mesh import status
 from reference_impl.mesh.ordering import _mix
 from reference_impl.validate import as_points
 from reference_impl.exact.predicates3d import workspace3d
@@ -175,13 +176,13 @@ class _Mesh:
         self._cavity(1024)
         self.flat = n < 4
         while not self.flat:
-            status = K.build(self.X, self.Y, self.Z, self.tet, self.nbr, self.mark, self.free,
+            code = K.build(self.X, self.Y, self.Z, self.tet, self.nbr, self.mark, self.free,
                              self.stack, self.bad, self.bf, self.bo, self.bj, self.vst, self.vhead,
                              self.enext, self.eto, self.etet, self.eface, self.state, self.dup,
                              self.w)
-            if status == K.FLAT:
+            if code == status.FLAT:
                 self.flat = True
-            elif status == K.DONE:
+            elif code == status.OK:
                 break
             elif self.state[K.S_NEED] == 1:
                 self._tets(2 * len(self.mark))

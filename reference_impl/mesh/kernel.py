@@ -49,6 +49,7 @@ from numba import njit
 
 from reference_impl.mesh.ordering import small_order
 from reference_impl.exact.predicates import WORKSPACE_SIZE, incircle_nb, orient2d_nb
+from reference_impl.mesh.status import OK
 
 INF = -1
 DEAD = -2
@@ -146,7 +147,7 @@ def _new_slot(M, state, bad, nbad, used):
 def insert(p, P, M, stack, bad, ba, bb, bo, start_of, state, w):
     """Insert vertex p (coordinates P[p]) into a mesh with at least one triangle.
 
-    Returns -1 when inserted, or the vertex that p duplicates exactly (then the
+    Returns OK (-1) when inserted, or the vertex that p duplicates exactly (then the
     mesh is unchanged).  Scratch arrays: ``stack``,
     ``bad``, ``ba``, ``bb``, ``bo`` (per cavity; as long as the triangle arrays)
     and ``start_of`` (per vertex, index v + 1).
@@ -224,7 +225,7 @@ def insert(p, P, M, stack, bad, ba, bb, bo, start_of, state, w):
         M[RECORD * s + NBR] = s2
         M[RECORD * s2 + NBR + 1] = s
     state[S_LAST] = last_real
-    return -1
+    return OK
 
 
 @njit(cache=True)
@@ -348,25 +349,25 @@ def extract(M, ntri, label):
             m += 1
         else:
             out_of[t] = -1
-    simp = np.empty((m, 3), dtype=np.int64)
-    for t in range(ntri):
-        r = out_of[t]
-        if r >= 0:
-            for k in range(3):
-                simp[r, k] = label[M[RECORD * t + VTX + k]]
-    return simp, out_of
+    return _gather(M, ntri, out_of, m, VTX, label), out_of
 
 
 @njit(cache=True)
 def extract_neighbors(M, ntri, out_of, m):
     """(m, 3) neighbours of the compacted triangles (-1 across the hull)."""
-    neig = np.empty((m, 3), dtype=np.int64)
+    return _gather(M, ntri, out_of, m, NBR, out_of)
+
+
+@njit(cache=True, inline="always")
+def _gather(M, ntri, out_of, m, field, table):
+    """(m, 3): row ``out_of[t]`` is ``table[M[RECORD*t + field + k]]`` for every kept triangle t."""
+    out = np.empty((m, 3), dtype=np.int64)
     for t in range(ntri):
         r = out_of[t]
         if r >= 0:
             for k in range(3):
-                neig[r, k] = out_of[M[RECORD * t + NBR + k]]
-    return neig
+                out[r, k] = table[M[RECORD * t + field + k]]
+    return out
 
 
 @njit(cache=True)

@@ -56,11 +56,11 @@ import numpy as np
 from numba import njit
 
 from reference_impl.exact.predicates import orient2d_nb
+from reference_impl.mesh.status import FLAT, GROW, OK
 from reference_impl.exact.predicates3d import insphere_nb, orient3d_nb
 
 INF = -1
 DEAD = -2
-GROW = -3            # insert(): arrays too small, nothing changed
 
 # state fields
 S_NTET, S_STAMP, S_LAST, S_NFREE, S_NEXT, S_RNG = 0, 1, 2, 3, 4, 5
@@ -68,8 +68,7 @@ S_SEED1, S_SEED2, S_SEED3, S_NEED = 6, 7, 8, 9          # seeds; what GROW needs
 S_STEPS, S_TESTS, S_BAD, S_SCANS = 10, 11, 12, 13       # statistics, never used for decisions
 STATE_SIZE = 16
 
-# build() results
-FLAT, DONE, MORE = 0, 1, 2
+# results of insert() and build(): see status.py (OK, GROW, FLAT)
 
 _F = np.array([[1, 3, 2], [0, 2, 3], [0, 3, 1], [0, 1, 2]], dtype=np.int64)  # = predicates3d.FACES
 
@@ -184,7 +183,7 @@ def locate(tet, nbr, X, Y, Z, px, py, pz, start, w, state):
 @njit(cache=True)
 def insert(p, X, Y, Z, tet, nbr, mark, free, stack, bad, bf, bo, bj,
            vst, vhead, enext, eto, etet, eface, state, w):
-    """Insert vertex p.  Returns -1 when inserted, the vertex p duplicates (mesh unchanged),
+    """Insert vertex p.  Returns OK (-1) when inserted, the vertex p duplicates (mesh unchanged),
     or GROW when the arrays are too small (mesh unchanged; ``state[S_NEED]`` says which)."""
     px = X[p]
     py = Y[p]
@@ -314,7 +313,7 @@ def insert(p, X, Y, Z, tet, nbr, mark, free, stack, bad, bf, bo, bj,
         state[S_NFREE] += 1
     # the next walk starts here (locate steps from a ghost to its real neighbour)
     state[S_LAST] = last_real if last_real >= 0 else s
-    return -1
+    return OK
 
 
 @njit(cache=True)
@@ -363,12 +362,36 @@ def _seed(a, b, c, d, X, Y, Z, tet, nbr, state, w):
 
 
 @njit(cache=True)
+def _spanning(X, Y, Z, w):
+    """With vertex 0, the first vertices that span space: i1, the first point other than
+    vertex 0; i2, the first after i1 off the line (0, i1); i3, the first after i2 off the
+    plane (0, i1, i2).  Those not found are -1 (then the points are coplanar)."""
+    found = np.full(3, -1, dtype=np.int64)
+    rank = 0
+    for i in range(1, X.shape[0]):
+        if rank == 0:
+            new = X[i] != X[0] or Y[i] != Y[0] or Z[i] != Z[0]
+        elif rank == 1:
+            new = not _collinear(0, found[0], i, X, Y, Z, w)
+        else:
+            a, b = found[0], found[1]
+            new = orient3d_nb(X[0], Y[0], Z[0], X[a], Y[a], Z[a], X[b], Y[b], Z[b],
+                              X[i], Y[i], Z[i], w) != 0
+        if new:
+            found[rank] = i
+            rank += 1
+            if rank == 3:
+                break
+    return found[0], found[1], found[2]
+
+
+@njit(cache=True)
 def build(X, Y, Z, tet, nbr, mark, free, stack, bad, bf, bo, bj,
           vst, vhead, enext, eto, etet, eface, state, dup, w):
     """Tetrahedralise vertices 0..n-1 in index order, resuming at ``state[S_NEXT]``.
 
     ``dup[i]`` receives the vertex that i duplicates (or -1).  Returns FLAT when
-    all points are coplanar (nothing built), DONE, or MORE when the arrays must be
+    all points are coplanar (nothing built), OK, or GROW when the arrays must be
     enlarged (see ``state[S_NEED]``) before calling again.
     """
     n = X.shape[0]
@@ -377,26 +400,7 @@ def build(X, Y, Z, tet, nbr, mark, free, stack, bad, bf, bo, bj,
             dup[i] = -1
         if state[S_RNG] == 0:
             state[S_RNG] = 2463534242
-        i1 = -1
-        for i in range(1, n):
-            if X[i] != X[0] or Y[i] != Y[0] or Z[i] != Z[0]:
-                i1 = i
-                break
-        if i1 < 0:
-            return FLAT
-        i2 = -1
-        for i in range(i1 + 1, n):
-            if not _collinear(0, i1, i, X, Y, Z, w):
-                i2 = i
-                break
-        if i2 < 0:
-            return FLAT
-        i3 = -1
-        for i in range(i2 + 1, n):
-            if orient3d_nb(X[0], Y[0], Z[0], X[i1], Y[i1], Z[i1], X[i2], Y[i2], Z[i2],
-                           X[i], Y[i], Z[i], w) != 0:
-                i3 = i
-                break
+        i1, i2, i3 = _spanning(X, Y, Z, w)
         if i3 < 0:
             return FLAT
         _seed(0, i1, i2, i3, X, Y, Z, tet, nbr, state, w)
@@ -411,10 +415,10 @@ def build(X, Y, Z, tet, nbr, mark, free, stack, bad, bf, bo, bj,
                    vst, vhead, enext, eto, etet, eface, state, w)
         if r == GROW:
             state[S_NEXT] = p
-            return MORE
+            return GROW
         dup[p] = r
     state[S_NEXT] = n
-    return DONE
+    return OK
 
 
 @njit(cache=True)

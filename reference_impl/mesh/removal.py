@@ -13,6 +13,7 @@ from numba import njit
 from reference_impl.mesh.kernel import (DEAD, INF, MARK, NBR, RECORD, SPARE, STATE_SIZE, S_LAST, S_NTRI, S_STAMP, VTX,
                                         extract, insert, is_ghost, seed)
 from reference_impl.exact.predicates import incircle_nb, orient2d_nb
+from reference_impl.mesh.status import FLAT, LOST, OK
 
 
 # ============================================================================ removal
@@ -53,7 +54,7 @@ from reference_impl.exact.predicates import incircle_nb, orient2d_nb
 #    and y on opposite arcs cut by the chord a b.  But y is a link vertex, so v y is an edge
 #    of the triangulation, and the chords v y and a b cross: impossible.  (Nor can a scratch
 #    vertex lie inside the segment a b, an edge of the triangulation.)  The code checks it
-#    anyway and reports FAILED rather than corrupt the mesh;
+#    anyway and reports LOST rather than corrupt the mesh;
 # 3. a flood fill from the boundary edges, never crossing them, collects the scratch
 #    triangles inside the hole (ghosts included for a hull vertex: they are the new hull
 #    edges); there are d - 2 of them;
@@ -73,7 +74,6 @@ from reference_impl.exact.predicates import incircle_nb, orient2d_nb
 # vertex on a cavity boundary (the only vertices whose triangles it destroys), the caller
 # sets it for the inserted vertex, and ``remove`` sets it for the link vertices.
 
-REMOVED, FLAT, FAILED = 0, 1, 2   # results of ``remove``
 
 
 @njit(cache=True, inline="always")
@@ -179,8 +179,8 @@ def _find_edge(M, start_of, x, y):
 def remove(v, P, M, stack, bad, ba, bb, bo, start_of, pos, state, w):
     """Remove vertex v from the mesh, keeping it Delaunay (see the comment above).
 
-    Returns REMOVED, or FLAT when the remaining points are all collinear (the mesh is then
-    left untouched: the caller switches to its flat representation), or FAILED if a sanity
+    Returns OK, or FLAT when the remaining points are all collinear (the mesh is then
+    left untouched: the caller switches to its flat representation), or LOST if a sanity
     check of the re-triangulation fails (never expected; the mesh is then left for the
     caller to rebuild).  ``pos`` is per-vertex scratch (index v + 1); ``stack`` .. ``bo``
     are the insertion scratch arrays.
@@ -250,7 +250,7 @@ def remove(v, P, M, stack, bad, ba, bb, bo, start_of, pos, state, w):
         state[S_LAST] = tris[0]
         _free_slot(M, max(tris[d - 2], tris[d - 1]), state, start_of)
         _free_slot(M, min(tris[d - 2], tris[d - 1]), state, start_of)
-        return REMOVED
+        return OK
 
     # --- 3. Delaunay triangulation of the real link vertices, in a scratch mesh ------------
     L = np.zeros(RECORD * (2 * d + 8), dtype=np.int32)
@@ -280,7 +280,7 @@ def remove(v, P, M, stack, bad, ba, bb, bo, start_of, pos, state, w):
     for i in range(d):
         t = _find_edge(L, start_of, lk[i], lk[(i + 1) % d])
         if t < 0:
-            return FAILED
+            return LOST
         if L[RECORD * t + MARK] != stamp:
             L[RECORD * t + MARK] = stamp
             stack[sp] = t
@@ -301,7 +301,7 @@ def remove(v, P, M, stack, bad, ba, bb, bo, start_of, pos, state, w):
                 stack[sp] = o
                 sp += 1
     if nfill != d - 2:
-        return FAILED
+        return LOST
 
     # --- 6. copy into the star's slots, stitch to the outside, free the two spare slots ----
     for j in range(nfill):
@@ -329,7 +329,7 @@ def remove(v, P, M, stack, bad, ba, bb, bo, start_of, pos, state, w):
     state[S_LAST] = tris[0]
     _free_slot(M, max(tris[d - 2], tris[d - 1]), state, start_of)
     _free_slot(M, min(tris[d - 2], tris[d - 1]), state, start_of)
-    return REMOVED
+    return OK
 
 
 @njit(cache=True)
