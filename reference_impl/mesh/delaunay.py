@@ -24,6 +24,12 @@ After updates the triangulation is Delaunay for the live points; where
 cocircular ties allow several answers it may pick another valid one than a
 fresh ``Delaunay(points[live])`` would.
 
+Composition (as in d3-delaunay and scipy): the derived structures take a ``Delaunay``
+and reuse its mesh, ``d.voronoi(bbox)``, ``d.euclidean_mst()``, ``d.gabriel_graph()``,
+``d.largest_empty_circle()`` (and ``closest_pair(d)``, ``max_clearance(d, s, g)``, ...);
+the adjacency is lazy and cached: ``vertex_neighbor_vertices`` (CSR) and
+``vertex_to_simplex``.  ``as_delaunay`` is how a structure accepts either kind of input.
+
 >>> d = Delaunay([(0, 0), (2, 0), (0, 2), (2, 2), (1, 1)])
 >>> len(d.simplices), sorted(d.hull.tolist())
 (4, [0, 1, 2, 3])
@@ -431,7 +437,7 @@ class Delaunay:
     # d3-delaunay's composition: each structure reuses this triangulation (no rebuild).
     # The imports are lazy: the structures import this module.
     def voronoi(self, bbox) -> list[np.ndarray]:
-        """The Voronoi cells clipped to ``bbox`` (``reference_impl.voronoi`` on this mesh).
+        """Voronoi cells clipped to ``bbox``: ``reference_impl.voronoi`` on this mesh.
 
         >>> Delaunay([(0, 0), (1, 0), (0, 1)]).voronoi((-2, -2, 2, 2))[0].tolist()
         [[-2.0, -2.0], [0.5, -2.0], [0.5, 0.5], [-2.0, 0.5]]
@@ -440,16 +446,12 @@ class Delaunay:
         return voronoi(self, bbox)
 
     def euclidean_mst(self) -> np.ndarray:
-        """The (k, 2) edges of a Euclidean minimum spanning tree (``reference_impl.euclidean_mst``).
-
-        >>> Delaunay([(0, 0), (4, 0), (0, 3), (5, 5), (4, 1)]).euclidean_mst().tolist()
-        [[0, 1], [0, 2], [1, 4], [3, 4]]
-        """
+        """(k, 2) edges of a Euclidean minimum spanning tree: ``reference_impl.euclidean_mst``."""
         from reference_impl.structures.proximity import euclidean_mst
         return euclidean_mst(self)
 
     def gabriel_graph(self) -> np.ndarray:
-        """The (k, 2) edges of the Gabriel graph (``reference_impl.gabriel_graph``).
+        """(k, 2) edges of the Gabriel graph: ``reference_impl.gabriel_graph`` on this mesh.
 
         >>> Delaunay([(0, 0), (1, 0), (1, 1), (0, 1)]).gabriel_graph().tolist()
         [[0, 1], [0, 3], [1, 2], [2, 3]]
@@ -458,8 +460,7 @@ class Delaunay:
         return gabriel_graph(self)
 
     def largest_empty_circle(self):
-        """``Circle(x, y, r)``: the largest empty circle centred in the hull
-        (``reference_impl.largest_empty_circle``).
+        """``Circle(x, y, r)`` centred in the hull: ``reference_impl.largest_empty_circle``.
 
         >>> Delaunay([(0, 0), (2, 0), (1, 1)]).largest_empty_circle()
         Circle(x=1.0, y=0.0, r=1.0)
