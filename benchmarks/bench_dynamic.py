@@ -8,7 +8,7 @@ Workload (seeded): ``--nodes`` joins at uniform random positions in the unit squ
 ``--ops`` operations: 40% joins, 30% failures of a random live node, 30% neighbour
 queries of a random live node.  Three ways to answer it:
 
-* ``incremental``: ``reference_impl.structures.dynamic.process`` (one Bowyer-Watson insertion per
+* ``incremental``: ``reference_impl.DynamicNetwork`` (one Bowyer-Watson insertion per
   join, one star re-triangulation per failure, a walk around the node per query);
 * ``rebuild``: a fresh ``reference_impl.Delaunay`` of the live nodes for every query;
 * ``scipy``: a fresh ``scipy.spatial.Delaunay`` (Qhull) of the live nodes for every query.
@@ -96,7 +96,9 @@ def main() -> None:
     if args.quick:
         args.nodes, args.ops, args.sample = 2000, 2000, 10
 
-    from reference_impl.structures.dynamic import DynamicNetwork, process
+    from grader.problems import load_problem
+    from reference_impl.structures.dynamic import DynamicNetwork
+    process = load_problem("dynamic-network").generator.process   # the problem's adapter
     process(workload(50, 50, 1))                       # JIT warm-up (cached after the first run)
     ops = workload(args.nodes, args.ops, args.seed)
     net = DynamicNetwork()

@@ -17,8 +17,8 @@ Part 1, the CDT (best-of-k wall time, runs interleaved so noise hits both alike)
 Part 2, shortest paths on a star polygon with 2000 vertices and 50 hexagonal
 holes: building the ``NavMesh``, then per query ``shortest_path`` (optimal)
 against ``channel_path`` (channel + funnel only, the usual game-engine answer,
-not always optimal with holes), and the one-call ``shortest_path(boundary,
-holes, start, goal)``.  Then, on a small polygon, the optimal query against the
+not always optimal with holes), and the one-call ``NavMesh(boundary,
+holes).shortest_path(start, goal)``.  Then, on a small polygon, the optimal query against the
 test oracle (visibility graph with shapely + networkx Dijkstra).
 Ratios below 1.0 mean ours is faster.
 """
@@ -36,7 +36,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
 from reference_impl.structures.constrained import ConstrainedDelaunay  # noqa: E402
-from reference_impl.structures.navmesh import NavMesh, polygon_triangulation, shortest_path  # noqa: E402
+from reference_impl.structures.navmesh import NavMesh, polygon_triangulation  # noqa: E402
 
 
 def star(rng, k, rmin=0.5):
@@ -136,8 +136,8 @@ def bench_paths(repeat, queries):
           f"funnel only {t_fun / queries * 1e3:.1f} ms/query, ratio {t_opt / t_fun:.2f}; "
           f"the funnel path was longer than optimal in {longer} of {queries}")
     t = time.perf_counter()
-    shortest_path(boundary, holes, starts[0], goals[0])
-    print(f"one call shortest_path(boundary, holes, start, goal): {time.perf_counter() - t:.3f} s")
+    NavMesh(boundary, holes).shortest_path(starts[0], goals[0])
+    print(f"one call NavMesh(boundary, holes).shortest_path(start, goal): {time.perf_counter() - t:.3f} s")
 
     sys.path.insert(0, str(ROOT / "tests" / "geometry"))
     from test_navmesh import oracle_length                        # the test oracle

@@ -17,7 +17,7 @@ import numbers
 
 import numpy as np
 
-__all__ = ["as_points", "as_point", "as_index_rows"]
+__all__ = ["as_points", "as_point", "as_queries", "as_index_rows"]
 
 
 def as_points(points, name: str = "points", dim: int = 2) -> np.ndarray:
@@ -61,6 +61,26 @@ def as_point(p, name: str = "point", dim: int = 2) -> np.ndarray:
     [1.0, 2.0]
     """
     return as_points([p] if np.ndim(p) == 1 else p, name=name, dim=dim).reshape(dim)
+
+
+def as_queries(p, dim: int) -> tuple[np.ndarray, tuple[int, ...]]:
+    """Validate queries shaped (..., dim): return them as a (k, dim) array and the shape
+    ``(...)`` of the answer (``()`` for one point).  Used by ``find_simplex`` in 2D and 3D.
+
+    >>> q, shape = as_queries([[(0, 0), (1, 2)]], 2)
+    >>> q.shape, shape
+    ((2, 2), (1, 2))
+    """
+    try:
+        shape = None if isinstance(p, (str, bytes)) else np.shape(p)
+    except ValueError:   # ragged input: as_points names the problem
+        shape = None
+    if shape is not None and len(shape) == 1 and shape[0] > 0:
+        return as_points([p], name="p", dim=dim), ()
+    if shape is not None and len(shape) > 2 and shape[-1] == dim:
+        return as_points(np.reshape(np.asarray(p), (-1, dim)), name="p", dim=dim), shape[:-1]
+    qs = as_points(p, name="p", dim=dim)
+    return qs, (len(qs),)
 
 
 def as_index_rows(rows, n: int, width: int, name: str, allow_integral_floats: bool = False) -> np.ndarray:

@@ -24,6 +24,12 @@ After updates the triangulation is Delaunay for the live points; where
 cocircular ties allow several answers it may pick another valid one than a
 fresh ``Delaunay(points[live])`` would.
 
+Composition (as in d3-delaunay and scipy): the derived structures take a ``Delaunay``
+and reuse its mesh, ``d.voronoi(bbox)``, ``d.euclidean_mst()``, ``d.gabriel_graph()``,
+``d.largest_empty_circle()`` (and ``closest_pair(d)``, ``max_clearance(d, s, g)``, ...);
+the adjacency is lazy and cached: ``vertex_neighbor_vertices`` (CSR) and
+``vertex_to_simplex``.  ``as_delaunay`` is how a structure accepts either kind of input.
+
 >>> d = Delaunay([(0, 0), (2, 0), (0, 2), (2, 2), (1, 1)])
 >>> len(d.simplices), sorted(d.hull.tolist())
 (4, [0, 1, 2, 3])
@@ -44,10 +50,10 @@ from reference_impl.mesh import kernel as _mesh
 from reference_impl.mesh import removal as _mesh_remove
 from reference_impl.mesh import status
 from reference_impl.mesh.ordering import SMALL, insertion_order
-from reference_impl.validate import as_point, as_points
+from reference_impl.validate import as_point, as_points, as_queries
 from reference_impl.exact.predicates import orient2d_nb
 
-__all__ = ["Delaunay"]
+__all__ = ["Delaunay", "as_delaunay", "live_points"]
 
 _ITYPE = np.int32  # mesh arrays: half the memory traffic of int64
 _NO_ORDER = np.zeros(0, dtype=np.int64)
@@ -67,12 +73,43 @@ def _plain(v) -> bool:
     return (t is float and math.isfinite(v)) or (t is int and -2 ** 53 <= v <= 2 ** 53)
 
 
+def as_delaunay(points_or_delaunay) -> "Delaunay":
+    """The given ``Delaunay`` itself, or a new one of the given points.
+
+    The derived structures (Voronoi, proximity graphs, empty circle, clearance, hull)
+    start with this, so they accept either and never triangulate a ``Delaunay`` again.
+
+    >>> d = Delaunay([(0, 0), (1, 0), (0, 1)])
+    >>> as_delaunay(d) is d, as_delaunay([(0, 0), (1, 0), (0, 1)]).simplices.shape
+    (True, (1, 3))
+    """
+    if isinstance(points_or_delaunay, Delaunay):
+        return points_or_delaunay
+    return Delaunay(points_or_delaunay)
+
+
+def live_points(d: "Delaunay") -> tuple[np.ndarray, np.ndarray]:
+    """``(points, indices)``: the coordinates and input indices of the points not removed.
+
+    >>> d = Delaunay([(0, 0), (1, 0), (0, 1), (2, 2)]); d.remove(1)
+    >>> live_points(d)[1].tolist()
+    [0, 2, 3]
+    """
+    pts = d.points
+    if d._nremoved == 0:
+        return pts, np.arange(len(pts))
+    idx = np.flatnonzero(d.live)
+    return pts[idx], idx
+
+
 class Delaunay:
     """Delaunay triangulation of 2D points (exact predicates, O(n log n) expected).
 
     Attributes: ``points``, ``simplices``, ``neighbors``, ``hull``, ``index_map``, ``live``.
     Methods: ``find_simplex(p)``, ``insert(p)``, ``remove(i)``, ``edges()``,
-    ``vertex_neighbors(i)``.
+    ``vertex_neighbors(i)``.  Lazy, cached adjacency as in scipy: ``vertex_neighbor_vertices``,
+    ``vertex_to_simplex``.  Derived structures on this mesh (no re-triangulation):
+    ``voronoi(bbox)``, ``euclidean_mst()``, ``gabriel_graph()``, ``largest_empty_circle()``.
 
     >>> d = Delaunay([(0, 0), (1, 0), (0, 1)])
     >>> d.insert((1, 1)), d.vertex_neighbors(3).tolist()
@@ -332,13 +369,15 @@ class Delaunay:
     def find_simplex(self, p):
         """Index of a triangle containing p (on an edge: any incident one), -1 outside.
 
-        ``p`` may be one point (returns an int) or an (k, 2) array (returns an array).
+        Shaped like the input without its last axis, as in scipy: an (..., 2) array
+        of queries gives an (...) int64 array ((k, 2) gives (k,)); one point, shape
+        (2,), gives a 0-d answer, returned as a Python ``int``.
+
+        >>> d = Delaunay([(0, 0), (1, 0), (0, 1)])
+        >>> d.find_simplex((0.2, 0.2)), d.find_simplex([[[0.2, 0.2], [3, 3]]]).tolist()
+        (0, [[0, -1]])
         """
-        try:
-            single = not isinstance(p, (str, bytes)) and np.ndim(p) == 1
-        except ValueError:  # ragged input: as_points names the problem
-            single = False
-        qs = as_points([p] if single else p, name="p")
+        qs, shape = as_queries(p, 2)
         res = np.full(len(qs), -1, dtype=np.int64)
         if not self._flat and len(qs):
             # many queries: answer them along a Hilbert curve, so each walk starts next door
@@ -346,11 +385,89 @@ class Delaunay:
             found = _mesh.find(self._M, self._P, qs[order], int(self._state[_mesh.S_LAST]), self._w,
                                np.zeros(_mesh.STATE_SIZE, dtype=np.int64))
             res[order] = self._cache_out_of()[found]
-        return int(res[0]) if single else res
+        return int(res[0]) if shape == () else res.reshape(shape)
 
     def _cache_out_of(self) -> np.ndarray:
         out_of = self._result()["out_of"]
         return np.concatenate([out_of, [-1]])  # index -1 (outside) maps to -1
+
+    # ------------------------------------------------------------------ adjacency (lazy, cached)
+    @property
+    def vertex_neighbor_vertices(self) -> tuple[np.ndarray, np.ndarray]:
+        """``(indptr, indices)``: the Delaunay graph in CSR form, as in scipy.spatial.Delaunay.
+
+        The neighbours of point k are ``indices[indptr[k]:indptr[k + 1]]`` (sorted).
+        Merged duplicates and removed points have none (their representative,
+        ``index_map[k]``, has them); for collinear input the graph is the chain.
+        Computed on first use and cached until the next ``insert`` or ``remove``.
+
+        >>> indptr, indices = Delaunay([(0, 0), (1, 0), (0, 1), (0, 0)]).vertex_neighbor_vertices
+        >>> indptr.tolist(), indices.tolist()
+        ([0, 2, 4, 6, 6], [1, 2, 0, 2, 0, 1])
+        """
+        cache = self._result()
+        if "vertex_neighbor_vertices" not in cache:
+            e = self.edges().astype(np.int64)
+            n = self._npts
+            src = np.concatenate([e[:, 0], e[:, 1]])
+            dst = np.concatenate([e[:, 1], e[:, 0]])
+            order = np.lexsort((dst, src))
+            indptr = np.zeros(n + 1, dtype=np.int64)
+            np.cumsum(np.bincount(src, minlength=n), out=indptr[1:])
+            cache["vertex_neighbor_vertices"] = (indptr, dst[order])
+        return cache["vertex_neighbor_vertices"]
+
+    @property
+    def vertex_to_simplex(self) -> np.ndarray:
+        """(n,) int64: some triangle having point k as a vertex, -1 if none (a merged
+        duplicate, a removed point, or no triangles at all), as in scipy.spatial.Delaunay.
+        Cached until the next ``insert`` or ``remove``.
+
+        >>> Delaunay([(0, 0), (1, 0), (0, 1), (0, 0)]).vertex_to_simplex.tolist()
+        [0, 0, 0, -1]
+        """
+        cache = self._result()
+        if "vertex_to_simplex" not in cache:
+            s = self.simplices
+            out = np.full(self._npts, -1, dtype=np.int64)
+            out[s.ravel()[::-1]] = np.repeat(np.arange(len(s)), 3)[::-1]   # the first triangle
+            cache["vertex_to_simplex"] = out
+        return cache["vertex_to_simplex"]
+
+    # ------------------------------------------------------------------ derived structures
+    # d3-delaunay's composition: each structure reuses this triangulation (no rebuild).
+    # The imports are lazy: the structures import this module.
+    def voronoi(self, bbox) -> list[np.ndarray]:
+        """Voronoi cells clipped to ``bbox``: ``reference_impl.voronoi`` on this mesh.
+
+        >>> Delaunay([(0, 0), (1, 0), (0, 1)]).voronoi((-2, -2, 2, 2))[0].tolist()
+        [[-2.0, -2.0], [0.5, -2.0], [0.5, 0.5], [-2.0, 0.5]]
+        """
+        from reference_impl.structures.voronoi import voronoi
+        return voronoi(self, bbox)
+
+    def euclidean_mst(self) -> np.ndarray:
+        """(k, 2) edges of a Euclidean minimum spanning tree: ``reference_impl.euclidean_mst``."""
+        from reference_impl.structures.proximity import euclidean_mst
+        return euclidean_mst(self)
+
+    def gabriel_graph(self) -> np.ndarray:
+        """(k, 2) edges of the Gabriel graph: ``reference_impl.gabriel_graph`` on this mesh.
+
+        >>> Delaunay([(0, 0), (1, 0), (1, 1), (0, 1)]).gabriel_graph().tolist()
+        [[0, 1], [0, 3], [1, 2], [2, 3]]
+        """
+        from reference_impl.structures.proximity import gabriel_graph
+        return gabriel_graph(self)
+
+    def largest_empty_circle(self):
+        """``Circle(x, y, r)`` centred in the hull: ``reference_impl.largest_empty_circle``.
+
+        >>> Delaunay([(0, 0), (2, 0), (1, 1)]).largest_empty_circle()
+        Circle(x=1.0, y=0.0, r=1.0)
+        """
+        from reference_impl.structures.empty_circle import largest_empty_circle
+        return largest_empty_circle(self)
 
     # ------------------------------------------------------------------ updates
     def insert(self, p) -> int:

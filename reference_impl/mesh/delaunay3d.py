@@ -48,7 +48,7 @@ from numba import njit
 from reference_impl.mesh import kernel3d as K
 from reference_impl.mesh import status
 from reference_impl.mesh.ordering import _mix
-from reference_impl.validate import as_points
+from reference_impl.validate import as_points, as_queries
 from reference_impl.exact.predicates3d import workspace3d
 
 __all__ = ["Delaunay3D", "delaunay_3d", "insertion_order_3d", "hilbert_index_3d"]
@@ -312,13 +312,14 @@ class Delaunay3D:
     def find_simplex(self, p):
         """Index of a tetrahedron containing p (on a shared face: any one), -1 outside the hull.
 
-        ``p`` is one point (returns an int) or a (k, 3) array (returns an array).
+        Shaped like the input without its last axis, as in scipy: an (..., 3) array
+        gives an (...) int64 array ((k, 3) gives (k,)); one point, shape (3,), gives a
+        0-d answer, returned as a Python ``int``.
 
         >>> Delaunay3D([(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)]).find_simplex([(0.1, 0.1, 0.1)])
         array([0])
         """
-        single = not isinstance(p, (str, bytes)) and np.ndim(p) == 1
-        qs = as_points([p] if single else p, name="p", dim=3)
+        qs, shape = as_queries(p, 3)
         if self.flat:
             res = np.full(len(qs), -1, dtype=np.int64)
         else:
@@ -329,7 +330,7 @@ class Delaunay3D:
                            np.ascontiguousarray(P[:, 1]), np.ascontiguousarray(P[:, 2]),
                            qs, int(m.state[K.S_LAST]), m.w, m.state.copy())
             res = np.where(found >= 0, self._out_of[np.maximum(found, 0)], -1)
-        return int(res[0]) if single else res
+        return int(res[0]) if shape == () else res.reshape(shape)
 
     def __repr__(self) -> str:
         return f"Delaunay3D(n={len(self._points)}, tetrahedra={len(self._simp)})"

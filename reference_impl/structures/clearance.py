@@ -71,8 +71,8 @@ import numpy as np
 from numba import njit
 from numpy.typing import ArrayLike
 
-from reference_impl.mesh.delaunay import Delaunay
-from reference_impl.validate import as_point, as_points
+from reference_impl.mesh.delaunay import Delaunay, as_delaunay, live_points
+from reference_impl.validate import as_point
 
 __all__ = ["max_clearance"]
 
@@ -104,11 +104,12 @@ def _nearest_distance(pts: np.ndarray, q: np.ndarray) -> float:
     return float(np.min(np.hypot(pts[:, 0] - q[0], pts[:, 1] - q[1])))
 
 
-def max_clearance(points: ArrayLike, start: ArrayLike, goal: ArrayLike) -> float:
+def max_clearance(points: ArrayLike | Delaunay, start: ArrayLike, goal: ArrayLike) -> float:
     """Largest radius of a disk that can move from ``start`` to ``goal`` among point obstacles.
 
-    ``points`` are the obstacles ((n, 2)); ``start`` and ``goal`` are the disk
-    centre's end positions.  Returns ``inf`` when there is no obstacle, 0.0 when
+    ``points`` are the obstacles ((n, 2)), or a ``Delaunay`` of them (its mesh is used
+    as it is: no re-triangulation; removed points are no obstacles); ``start`` and
+    ``goal`` are the disk centre's end positions.  Returns ``inf`` when there is no obstacle, 0.0 when
     start or goal is an obstacle.  Raises ``ValueError`` for malformed input.
 
     >>> max_clearance([(0, 0), (4, 0), (2, 1)], (2, -3), (2, 3))   # go around: d(goal) binds
@@ -120,13 +121,14 @@ def max_clearance(points: ArrayLike, start: ArrayLike, goal: ArrayLike) -> float
     >>> max_clearance([], (0, 0), (1, 1))
     inf
     """
-    pts = as_points(points)
+    d = as_delaunay(points)
+    pts = d.points
     s = as_point(start, name="start")
     g = as_point(goal, name="goal")
-    if len(pts) == 0:
+    obstacles = live_points(d)[0]
+    if len(obstacles) == 0:
         return float("inf")
-    ends = min(_nearest_distance(pts, s), _nearest_distance(pts, g))
-    d = Delaunay(pts)
+    ends = min(_nearest_distance(obstacles, s), _nearest_distance(obstacles, g))
     simp, nbrs = d.simplices, d.neighbors
     m = len(simp)
     if m == 0 or ends == 0.0:

@@ -8,7 +8,7 @@ Use it from Python::
 or run the examples: ``python -m pytest --doctest-modules reference_impl/structures/empty_circle.py``.
 
 >>> largest_empty_circle([(0, 0), (4, 0), (4, 4), (0, 4)])
-(2.0, 2.0, 2.8284271247461903)
+Circle(x=2.0, y=2.0, r=2.8284271247461903)
 
 Why these candidates (Toussaint 1983).  Let d(x) be the distance from x to the
 nearest point and H the convex hull.  Inside the Voronoi cell of a point p,
@@ -48,20 +48,20 @@ empty input raises ``ValueError`` (there is no hull to put a centre in).
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
 import numba
 import numpy as np
 from numba import njit
 from numpy.typing import ArrayLike
 
-from reference_impl.mesh.delaunay import Delaunay
+from reference_impl.mesh.delaunay import Delaunay, as_delaunay
 from reference_impl.exact.expansion import EPSILON
 from reference_impl.structures.hull import convex_hull
-from reference_impl.validate import as_points
 from reference_impl.exact.predicates import orient2d_nb, workspace
 from reference_impl.structures.voronoi import _pow2_exponent, circumcentres, delaunay_adjacency
 
-__all__ = ["largest_empty_circle"]
+__all__ = ["Circle", "largest_empty_circle"]
 
 
 # --------------------------------------------------------------------- exact walk decisions
@@ -236,40 +236,50 @@ def _collinear_answer(chain: np.ndarray, X: np.ndarray, Y: np.ndarray) -> tuple[
     return float(0.5 * ax + 0.5 * bx), float(0.5 * ay + 0.5 * by), float(0.5 * math.hypot(bx - ax, by - ay))
 
 
-def largest_empty_circle(points: ArrayLike) -> tuple[float, float, float]:
-    """Centre and radius ``(cx, cy, r)`` of a largest circle with no point strictly inside,
-    whose centre lies in the convex hull of ``points``.
+class Circle(NamedTuple):
+    """Centre and radius (a tuple: ``cx, cy, r = circle`` and ``circle == (x, y, r)`` work)."""
 
-    One distinct point gives radius 0; collinear points give the midpoint of the
-    longest gap.  Raises ``ValueError`` for empty or malformed input.
+    x: float
+    y: float
+    r: float
+
+
+def largest_empty_circle(points: ArrayLike | Delaunay) -> Circle:
+    """``Circle(x, y, r)``: centre and radius of a largest circle with no point strictly
+    inside, whose centre lies in the convex hull of ``points``.
+
+    ``points``: the (n, 2) points, or a ``Delaunay`` of them (its mesh is used as it is:
+    no re-triangulation; removed points are left out).  One distinct point gives radius
+    0; collinear points give the midpoint of the longest gap.  Raises ``ValueError`` for
+    empty or malformed input.
 
     >>> largest_empty_circle([(0, 0), (2, 0), (1, 1)])       # right angle: centre on the hull
-    (1.0, 0.0, 1.0)
-    >>> largest_empty_circle([(0, 0), (1, 0), (4, 0)])       # collinear: the longest gap
-    (2.5, 0.0, 1.5)
-    >>> largest_empty_circle([(3, 4)])
+    Circle(x=1.0, y=0.0, r=1.0)
+    >>> largest_empty_circle([(0, 0), (1, 0), (4, 0)]) == (2.5, 0.0, 1.5)   # collinear: the longest gap
+    True
+    >>> tuple(largest_empty_circle([(3, 4)]))
     (3.0, 4.0, 0.0)
     """
-    pts = as_points(points)
-    if len(pts) == 0:
+    d = as_delaunay(points)
+    pts = d.points
+    if not d.live.any():
         raise ValueError("points is empty: the largest empty circle needs at least one point")
-    d = Delaunay(pts)
     k = _pow2_exponent(pts)
     X = np.ldexp(pts[:, 0], -k)
     Y = np.ldexp(pts[:, 1], -k)
     simp = d.simplices
     if len(simp) == 0:
         cx, cy, r = _collinear_answer(d.hull, X, Y)
-        return float(np.ldexp(cx, k)), float(np.ldexp(cy, k)), float(np.ldexp(r, k))
+        return Circle(float(np.ldexp(cx, k)), float(np.ldexp(cy, k)), float(np.ldexp(r, k)))
     ptr, nbr = delaunay_adjacency(d)
     bcap = 6 * len(pts) + 16
     bx, by, br = np.empty(bcap), np.empty(bcap), np.empty(bcap)
     nb = _boundary_candidates(X, Y, d.hull.astype(np.int64), ptr, nbr, bx, by, br)
     px, py, pr = _circumcircles(simp, X, Y)
     ok = np.isfinite(px) & np.isfinite(py) & np.isfinite(pr)
-    ok = _in_hull(convex_hull(pts), X, Y, px, py, ok, workspace())
+    ok = _in_hull(convex_hull(d), X, Y, px, py, ok, workspace())
     cx = np.concatenate([bx[:nb], px[ok]])
     cy = np.concatenate([by[:nb], py[ok]])
     cr = np.concatenate([br[:nb], pr[ok]])
     i = _best(cx, cy, cr)
-    return float(np.ldexp(cx[i], k)), float(np.ldexp(cy[i], k)), float(np.ldexp(cr[i], k))
+    return Circle(float(np.ldexp(cx[i], k)), float(np.ldexp(cy[i], k)), float(np.ldexp(cr[i], k)))

@@ -41,6 +41,7 @@ import numpy as np
 from numba import njit
 from numpy.typing import ArrayLike
 
+from reference_impl.mesh.delaunay import Delaunay
 from reference_impl.validate import as_points
 from reference_impl.exact.predicates import CCW_ERRBOUND_A, orient2d_nb, workspace
 
@@ -135,8 +136,34 @@ def _certainly_inside(pts: np.ndarray) -> np.ndarray:
     return inside
 
 
-def convex_hull(points: ArrayLike, collinear: bool = False) -> np.ndarray:
+@njit(cache=True)
+def _corners(X, Y, cycle, w):
+    """Mask of the vertices of a closed convex cycle that are corners (not on an edge)."""
+    m = len(cycle)
+    keep = np.ones(m, dtype=np.bool_)
+    for i in range(m):
+        a, b, c = cycle[i - 1], cycle[i], cycle[(i + 1) % m]
+        keep[i] = orient2d_nb(X[a], Y[a], X[b], Y[b], X[c], Y[c], w) != 0
+    return keep
+
+
+def _mesh_hull(d: Delaunay, collinear: bool) -> np.ndarray:
+    """The hull read off a triangulation (``Delaunay.hull`` keeps the collinear points)."""
+    h = np.asarray(d.hull, dtype=np.int64)
+    if collinear or len(h) < 2:
+        return h.copy()
+    if len(d.simplices) == 0:                 # flat: the chain's two end points
+        return h[[0, -1]]
+    P = d.points
+    h = h[_corners(np.ascontiguousarray(P[:, 0]), np.ascontiguousarray(P[:, 1]), h, workspace())]
+    return np.roll(h, -int(np.argmin(h)))
+
+
+def convex_hull(points: ArrayLike | Delaunay, collinear: bool = False) -> np.ndarray:
     """Indices of the convex hull of ``points``, counter-clockwise from the smallest index.
+
+    ``points`` may be a ``Delaunay``: its hull is then read off the mesh (removed
+    points are left out), with the same result as for its points.
 
     ``collinear=True`` also returns the points that lie on hull edges (in order
     along the edge).  Duplicates appear once (smallest index).  For flat input
@@ -151,6 +178,8 @@ def convex_hull(points: ArrayLike, collinear: bool = False) -> np.ndarray:
     >>> convex_hull([(2, 2), (0, 0), (1, 1)], collinear=True).tolist()
     [1, 2, 0]
     """
+    if isinstance(points, Delaunay):
+        return _mesh_hull(points, collinear)
     pts = as_points(points)
     n = len(pts)
     if n == 0:

@@ -593,15 +593,21 @@ class NavMesh:
 
 def shortest_path(boundary: ArrayLike, holes: Sequence[ArrayLike] | None, start: ArrayLike,
                   goal: ArrayLike) -> list[Point] | None:
-    """Euclidean shortest path from start to goal inside a polygon with holes (as in problem ``navmesh``).
+    """Deprecated alias: use ``NavMesh(boundary, holes).shortest_path(start, goal)``.
 
-    ``boundary``: a simple polygon; ``holes``: simple polygons strictly inside it,
-    disjoint (any orientation; invalid polygons raise ``ValueError``).  The
-    free space is closed: walls may be touched.  Returns ``[start, ..., goal]``
-    with corners at polygon vertices, or ``None`` when start or goal is outside
-    the free space.  See ``NavMesh`` to answer many queries on one polygon.
+    The four-argument form is the ``navmesh`` problem's adapter, which now lives with the
+    problem (``assignments/navmesh/generators/generator.py``).  This alias warns
+    (``DeprecationWarning``) and returns what ``NavMesh`` returns.
 
-    >>> shortest_path([(0, 0), (4, 0), (4, 4), (0, 4)], [], (1, 1), (3, 2))
-    [(1.0, 1.0), (3.0, 2.0)]
+    >>> import warnings
+    >>> with warnings.catch_warnings(record=True) as caught:
+    ...     warnings.simplefilter("always")
+    ...     path = shortest_path([(0, 0), (4, 0), (4, 4), (0, 4)], [], (1, 1), (3, 2))
+    >>> path, caught[0].category.__name__
+    ([(1.0, 1.0), (3.0, 2.0)], 'DeprecationWarning')
     """
+    import warnings
+
+    warnings.warn("reference_impl.shortest_path(boundary, holes, start, goal) is deprecated: "
+                  "use NavMesh(boundary, holes).shortest_path(start, goal)", DeprecationWarning, stacklevel=2)
     return NavMesh(boundary, holes).shortest_path(start, goal)

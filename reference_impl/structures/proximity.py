@@ -18,6 +18,9 @@ span more than 2**150 in magnitude.  Sorting edges by length works the same
 way: float keys with error intervals, and only the runs of overlapping
 intervals are merge-sorted again with the exact comparison.  No epsilon anywhere.
 
+Every function takes the points or a ``Delaunay`` of them (whose mesh it then
+uses: no re-triangulation; points removed from it are left out).
+
 Conventions (as in the rest of ``reference_impl``): edges are (k, 2) int arrays
 with i < j in each row and rows sorted; duplicated points are merged, so only
 the representative of a duplicate group (its smallest index, ``Delaunay.index_map``)
@@ -29,7 +32,7 @@ their indices, so the results do not depend on the input order.
 >>> euclidean_mst(pts).tolist()
 [[0, 1], [0, 2], [1, 4], [3, 4]]
 >>> closest_pair(pts)
-(1, 4)
+Pair(i=1, j=4)
 >>> gabriel_graph([(0, 0), (2, 0), (1, 1), (1, -3)]).tolist()   # (1, 1) sits on the circle on 0-1
 [[0, 2], [0, 3], [1, 2], [1, 3]]
 """
@@ -37,16 +40,17 @@ from __future__ import annotations
 
 import math
 from fractions import Fraction
+from typing import NamedTuple
 
 import numba
 import numpy as np
 from numba import njit
+from numpy.typing import ArrayLike
 
-from reference_impl.mesh.delaunay import Delaunay
+from reference_impl.mesh.delaunay import Delaunay, as_delaunay
 from reference_impl.exact.expansion import EPSILON, add, diff, mul, negate, two_diff, two_product, two_sum
-from reference_impl.validate import as_points
 
-__all__ = ["euclidean_mst", "closest_pair", "gabriel_graph", "relative_neighborhood_graph"]
+__all__ = ["Pair", "euclidean_mst", "closest_pair", "gabriel_graph", "relative_neighborhood_graph"]
 
 # ----------------------------------------------------------------------------- exact kernels
 # Filter constants.  The value of a*b + c*d - e*f - g*h, each factor a difference
@@ -197,8 +201,8 @@ class _Graph:
     """The Delaunay edges of a point set, with the apex of each adjacent triangle."""
 
     def __init__(self, points) -> None:
-        self.P = as_points(points)
-        d = Delaunay(self.P)
+        d = as_delaunay(points)            # a given Delaunay is used as it is
+        self.P = d.points
         self.index_map = d.index_map
         s = np.asarray(d.simplices, dtype=np.int64)
         if len(s) == 0:  # collinear or fewer than 3 distinct points: the sorted chain
@@ -445,7 +449,7 @@ def _kruskal(n, u, v, order, target):
     return out[:k]
 
 
-def euclidean_mst(points) -> np.ndarray:
+def euclidean_mst(points: ArrayLike | Delaunay) -> np.ndarray:
     """Edges of a Euclidean minimum spanning tree, (n_distinct - 1, 2), i < j, rows sorted.
 
     Kruskal over the Delaunay edges with an exact length order, so the total
@@ -467,8 +471,15 @@ def euclidean_mst(points) -> np.ndarray:
     return _sorted_edges(tree[:, 0], tree[:, 1])
 
 
-def closest_pair(points) -> tuple[int, int]:
-    """A pair (i, j), i < j, of points at minimum distance (exact).
+class Pair(NamedTuple):
+    """Two point indices (a tuple: ``i, j = pair`` and ``pair == (i, j)`` work)."""
+
+    i: int
+    j: int
+
+
+def closest_pair(points: ArrayLike | Delaunay) -> Pair:
+    """A pair ``Pair(i, j)``, i < j, of points at minimum distance (exact).
 
     If some points coincide the distance is 0, and the answer is the two smallest
     indices of the duplicated location with the smallest (x, y).  Otherwise it is
@@ -476,22 +487,24 @@ def closest_pair(points) -> tuple[int, int]:
     come first in (x, y) order.  Fewer than 2 points raise ``ValueError``.
 
     >>> closest_pair([(0, 0), (5, 5), (1, 1), (5, 6)])
-    (1, 3)
+    Pair(i=1, j=3)
     >>> closest_pair([(3, 3), (1, 1), (3, 3), (1, 1)])
-    (1, 3)
+    Pair(i=1, j=3)
     """
-    P = as_points(points)
-    if len(P) < 2:
-        raise ValueError(f"closest_pair needs at least 2 points, got {len(P)}")
-    g = _Graph(P)
+    d = as_delaunay(points)
+    P = d.points
+    n_live = int(np.count_nonzero(d.live))
+    if n_live < 2:
+        raise ValueError(f"closest_pair needs at least 2 points, got {n_live}")
+    g = _Graph(d)
     rep = g.index_map
-    dup = np.flatnonzero(rep != np.arange(len(P)))
+    dup = np.flatnonzero((rep != np.arange(len(P))) & (rep >= 0))    # removed points: rep -1
     if len(dup):
         groups = np.unique(rep[dup])
         first = groups[np.lexsort((P[groups, 1], P[groups, 0]))[0]]
-        return int(first), int(np.min(dup[rep[dup] == first]))
+        return Pair(int(first), int(np.min(dup[rep[dup] == first])))
     i = _length_order(P, g.u, g.v, first_only=True)[0]
-    return int(g.u[i]), int(g.v[i])
+    return Pair(int(g.u[i]), int(g.v[i]))
 
 
 # ----------------------------------------------------------------------------- Gabriel and RNG
@@ -507,7 +520,7 @@ def _gabriel_mask(X, Y, u, v, a1, a2):
     return keep
 
 
-def gabriel_graph(points) -> np.ndarray:
+def gabriel_graph(points: ArrayLike | Delaunay) -> np.ndarray:
     """Edges (k, 2), i < j, rows sorted, of the Gabriel graph.
 
     p and q are joined when the *closed* disc with diameter pq contains no other
@@ -603,7 +616,7 @@ def _rng_mask(X, Y, u, v, a1, a2, indptr, indices):
     return keep
 
 
-def relative_neighborhood_graph(points) -> np.ndarray:
+def relative_neighborhood_graph(points: ArrayLike | Delaunay) -> np.ndarray:
     """Edges (k, 2), i < j, rows sorted, of the relative neighbourhood graph (RNG).
 
     p and q are joined when no point r is closer to both than they are to each

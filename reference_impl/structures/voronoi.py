@@ -50,8 +50,7 @@ import numpy as np
 from numba import njit
 from numpy.typing import ArrayLike
 
-from reference_impl.mesh.delaunay import Delaunay
-from reference_impl.validate import as_points
+from reference_impl.mesh.delaunay import Delaunay, as_delaunay
 
 __all__ = ["voronoi", "as_bbox"]
 
@@ -418,13 +417,16 @@ def _slab_cells(X, Y, sites, ptr, nbr, box, out_x, out_y, out_ptr):
     return pos
 
 
-def voronoi(points: ArrayLike, bbox: ArrayLike) -> list[np.ndarray]:
+def voronoi(points: ArrayLike | Delaunay, bbox: ArrayLike) -> list[np.ndarray]:
     """Voronoi cell of every input point, clipped to ``bbox = (xmin, ymin, xmax, ymax)``.
 
+    ``points``: the (n, 2) sites, or a ``Delaunay`` of them (its mesh is used as it
+    is: no re-triangulation; also ``Delaunay.voronoi(bbox)``).
     Returns a list with one counter-clockwise ``(k, 2)`` float64 polygon per
     input point (starting at its lowest vertex); ``(0, 2)`` when the clipped
-    cell is empty; duplicates share their representative's polygon.  Raises
-    ``ValueError`` for bad points or a bad box.
+    cell is empty (and for a point removed from the ``Delaunay``); duplicates
+    share their representative's polygon.  Raises ``ValueError`` for bad points
+    or a bad box.
 
     >>> [c.tolist() for c in voronoi([(1, 1), (1, 1)], (0, 0, 2, 2))]
     [[[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]], [[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]]]
@@ -433,14 +435,14 @@ def voronoi(points: ArrayLike, bbox: ArrayLike) -> list[np.ndarray]:
     >>> voronoi([(0, 0), (9, 9)], (-1, -1, 1, 1))[1].shape       # cell misses the box
     (0, 2)
     """
-    pts = as_points(points)
+    d = as_delaunay(points)
     box = as_bbox(bbox)
+    pts = d.points
     n = len(pts)
     if n == 0:
         return []
-    d = Delaunay(pts)
     rep = d.index_map
-    sites = np.unique(rep)
+    sites = np.unique(rep[rep >= 0])
     k = _pow2_exponent(pts, box)
     X = np.ldexp(pts[:, 0], -k)
     Y = np.ldexp(pts[:, 1], -k)
@@ -469,5 +471,5 @@ def voronoi(points: ArrayLike, bbox: ArrayLike) -> list[np.ndarray]:
     hi = np.zeros(n, dtype=np.int64)
     lo[sites] = out_ptr[:-1]
     hi[sites] = out_ptr[1:]
-    return [verts[lo[r]:hi[r]] if r == i else verts[lo[r]:hi[r]].copy()
+    return [verts[lo[r]:hi[r]] if r == i else verts[lo[r]:hi[r]].copy() if r >= 0 else np.zeros((0, 2))
             for i, r in enumerate(rep.tolist())]

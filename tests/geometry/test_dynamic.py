@@ -20,8 +20,11 @@ import scipy.spatial
 from hypothesis import given, strategies as st
 
 from reference_impl import Delaunay
-from reference_impl.structures.dynamic import DynamicNetwork, process
+from grader.problems import load_problem
+from reference_impl.structures.dynamic import DynamicNetwork
 from reference_impl.exact.verify import exact_coordinates
+
+process = load_problem("dynamic-network").generator.process   # the problem's adapter (JSON in, out)
 
 
 # ------------------------------------------------------------------ the brute-force oracle

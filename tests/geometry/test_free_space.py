@@ -9,8 +9,11 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from reference_impl import NavMesh, shortest_path
+from grader.problems import load_problem
+from reference_impl import NavMesh
 from reference_impl.exact.free_space import path_length, path_problem, point_in_free_space, segment_in_free_space
+
+shortest_path = load_problem("navmesh").generator.shortest_path   # the problem's adapter
 
 ROOM = [(0, 0), (12, 0), (12, 8), (7, 8), (7, 5), (5, 5), (5, 8), (0, 8)]          # a notch in the top wall
 HOLES = [[(2, 2), (4, 2), (4, 4), (2, 4)], [(8, 1), (10, 1), (9, 3)], [(8, 4), (10, 4), (10, 6), (8, 6)]]

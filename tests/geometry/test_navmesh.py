@@ -25,8 +25,11 @@ import triangle
 from hypothesis import given, settings, strategies as st
 from shapely.geometry import LineString, Point, Polygon
 
-from reference_impl.structures.navmesh import NavMesh, funnel, polygon_triangulation, shortest_path
+from grader.problems import load_problem
+from reference_impl.structures.navmesh import NavMesh, funnel, polygon_triangulation
 from reference_impl.exact.verify import exact_coordinates, incircle_exact, orient_exact
+
+shortest_path = load_problem("navmesh").generator.shortest_path   # the problem's adapter
 
 
 # ----------------------------------------------------------------------------- oracle

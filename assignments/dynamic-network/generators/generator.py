@@ -13,7 +13,8 @@
   its centre: the centre is linked to all of them, then fails (the ring is cocircular: no
   diagonals), rejoins twice at the same spot, and one copy fails again.
 
-``solve(operations)`` is ``reference_impl.structures.dynamic.process`` (grader side only).
+``solve(operations)`` is ``process(operations)`` below: the problem's adapter on
+``reference_impl.DynamicNetwork`` (grader side only).
 
     python assignments/dynamic-network/generators/generator.py '{"kind": "ring", "r": 5}' 3
 
@@ -26,9 +27,12 @@ from __future__ import annotations
 
 import importlib.util
 import json
+import math
+import numbers
 import random
 import sys
 from pathlib import Path
+from typing import Any, Iterable, Sequence
 
 _spec = importlib.util.spec_from_file_location(
     "_emst_point_cases", Path(__file__).resolve().parents[2] / "emst" / "generators" / "generator.py")
@@ -91,10 +95,87 @@ def generate_args(case: dict, seed: int) -> list:
 
 
 def solve(operations: list) -> list:
-    """The answers of ``reference_impl.structures.dynamic.process`` (ids, "ok"/"error", sorted lists, counts)."""
-    from reference_impl.structures.dynamic import process
-
+    """The reference answers: ``process(operations)`` (ids, "ok"/"error", sorted lists, counts)."""
     return process(operations)
+
+
+# ----------------------------------------------------------------------------- the problem's adapter
+# JSON operations in, answers out, on ``reference_impl.DynamicNetwork`` (the library speaks arrays
+# and objects; this adapter is the problem's).  Tests load it with ``load_problem("dynamic-network")
+# .generator.process``.
+def _number(v: Any, what: str) -> float:
+    if isinstance(v, bool) or not isinstance(v, numbers.Real):
+        raise ValueError(f"{what} must be a number, got {v!r}")
+    try:
+        f = float(v)
+    except OverflowError:
+        f = math.inf
+    if not math.isfinite(f):
+        raise ValueError(f"{what} must be finite, got {v!r}")
+    return f
+
+
+def process(operations: Iterable[Sequence[Any]]) -> list[Any]:
+    """Run a list of network operations; return one answer per operation.
+
+    Operations (JSON-native lists; the first element names the operation):
+
+    ========================  =================================================================
+    operation                 answer
+    ========================  =================================================================
+    ``["join", x, y]``        the new node's id (int): the number of joins before this one
+    ``["fail", id]``          ``"ok"``; ``"error"`` if ``id`` never joined or already failed
+    ``["neighbors", id]``     the sorted list of ids of the node's Delaunay neighbours among
+                              the live nodes (see ``DynamicNetwork``); ``"error"`` if ``id``
+                              never joined or has failed
+    ``["count"]``             the number of live nodes (int)
+    ========================  =================================================================
+
+    Each operation is a list (or tuple); ``x``, ``y`` are finite numbers; ids are
+    integers.  Anything else (an unknown
+    operation, a wrong number of arguments, text or NaN coordinates) is malformed input
+    and raises ``ValueError`` naming the operation's position.
+
+    >>> process([["join", 0, 0], ["join", 1, 0], ["neighbors", 1], ["count"]])
+    [0, 1, [0], 2]
+    >>> process([["join", 0, 0], ["leave", 0]])
+    Traceback (most recent call last):
+    ...
+    ValueError: operations[1]: unknown operation 'leave' (expected join, fail, neighbors, count)
+    """
+    from reference_impl import DynamicNetwork    # grader side only
+
+    net = DynamicNetwork()
+    answers: list[Any] = []
+    arity = {"join": 3, "fail": 2, "neighbors": 2, "count": 1}
+    for k, op in enumerate(operations):
+        if not isinstance(op, (list, tuple)) or not op:
+            raise ValueError(f"operations[{k}] must be a non-empty list, got {op!r}")
+        name = op[0]
+        if name not in arity:
+            raise ValueError(f"operations[{k}]: unknown operation {name!r} "
+                             "(expected join, fail, neighbors, count)")
+        if len(op) != arity[name]:
+            raise ValueError(f"operations[{k}]: {name!r} takes {arity[name] - 1} argument(s), "
+                             f"got {list(op[1:])!r}")
+        if name == "join":
+            answers.append(net.join(_number(op[1], f"operations[{k}] x"),
+                                    _number(op[2], f"operations[{k}] y")))
+        elif name == "count":
+            answers.append(len(net))
+        else:
+            node = op[1]
+            if isinstance(node, bool) or not isinstance(node, numbers.Integral):
+                raise ValueError(f"operations[{k}]: node id must be an integer, got {node!r}")
+            try:
+                if name == "fail":
+                    net.fail(node)
+                    answers.append("ok")
+                else:
+                    answers.append(net.neighbors(node))
+            except ValueError:
+                answers.append("error")
+    return answers
 
 
 if __name__ == "__main__":

@@ -13,7 +13,8 @@ and a goal point.
 
 For every kind, ``scale_exp`` multiplies all coordinates by ``2**scale_exp`` (exact: a power of
 two) and then ``offset`` is added (e.g. 1e9, exact for the integer rooms).
-``solve(boundary, holes, start, goal)`` is ``reference_impl.shortest_path`` (grader side only).
+``solve(boundary, holes, start, goal)`` is ``shortest_path`` below (the problem's adapter on
+``reference_impl.NavMesh``; grader side only).
 
     python assignments/navmesh/generators/generator.py '{"kind": "cells", "cells": 2}' 7
 
@@ -88,10 +89,21 @@ def generate_args(case: dict, seed: int) -> list:
     return [[fix(p) for p in boundary], [[fix(p) for p in h] for h in holes], fix(start), fix(goal)]
 
 
-def solve(boundary, holes, start, goal) -> list[list[float]] | None:
-    """The shortest path ``[start, ..., goal]`` (``reference_impl.shortest_path``), or None."""
-    from reference_impl import shortest_path
+def shortest_path(boundary, holes, start, goal) -> list[tuple[float, float]] | None:
+    """The problem's adapter: the Euclidean shortest path ``[start, ..., goal]`` (tuples) inside
+    ``boundary`` outside ``holes``, or None when start or goal is outside the free space
+    (``reference_impl.NavMesh(boundary, holes).shortest_path(start, goal)``; grader side only).
 
+    >>> shortest_path([(0, 0), (4, 0), (4, 4), (0, 4)], [], (1, 1), (3, 2))
+    [(1.0, 1.0), (3.0, 2.0)]
+    """
+    from reference_impl import NavMesh
+
+    return NavMesh(boundary, holes).shortest_path(start, goal)
+
+
+def solve(boundary, holes, start, goal) -> list[list[float]] | None:
+    """The shortest path ``[start, ..., goal]`` (``shortest_path`` above, as lists), or None."""
     path = shortest_path(boundary, holes, start, goal)
     return None if path is None else [[float(x), float(y)] for x, y in path]
 

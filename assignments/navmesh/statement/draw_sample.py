@@ -1,7 +1,7 @@
 """Draw the statement's picture (sample.png): the sample room and its shortest path.
 
 Run from the checkout: .venv/bin/python assignments/navmesh/statement/draw_sample.py
-The path comes from reference_impl.shortest_path; the picture is committed (small PNG).
+The path comes from reference_impl.NavMesh.shortest_path; the picture is committed (small PNG).
 
 Example:
     python assignments/navmesh/statement/draw_sample.py    # writes assignments/navmesh/statement/sample.png
@@ -15,7 +15,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from reference_impl import shortest_path  # noqa: E402
+from reference_impl import NavMesh  # noqa: E402
 
 HERE = Path(__file__).resolve().parent
 
@@ -31,7 +31,7 @@ def main() -> Path:
     boundary = ring()
     holes = [ring() for _ in range(int(next(vals)))]
     start, goal = (float(next(vals)), float(next(vals))), (float(next(vals)), float(next(vals)))
-    path = shortest_path(boundary, holes, start, goal)
+    path = NavMesh(boundary, holes).shortest_path(start, goal)
     fig, ax = plt.subplots(figsize=(3.2, 3.2), dpi=100)
     ax.plot(*zip(*(boundary + boundary[:1])), color="black", lw=1.5)
     for h in holes:
