@@ -51,6 +51,7 @@ from numba import njit
 from numpy.typing import ArrayLike
 
 from reference_impl.mesh.delaunay import Delaunay
+from reference_impl.mesh.topology import each_edge_once, vertex_adjacency
 from reference_impl.validate import as_points
 
 __all__ = ["voronoi", "as_bbox"]
@@ -99,22 +100,14 @@ def delaunay_adjacency(d: Delaunay) -> tuple[np.ndarray, np.ndarray]:
     n = len(pts)
     simp, nbrs = d.simplices, d.neighbors
     if len(simp):
-        # the edge opposite vertex k of triangle t, kept once: by t if across is a hull or larger t
-        a = simp[:, [1, 2, 0]]
-        b = simp[:, [2, 0, 1]]
-        keep = (nbrs < 0) | (nbrs > np.arange(len(simp))[:, None])
-        a, b = a[keep], b[keep]
+        t, k = each_edge_once(nbrs)
+        a, b = simp[t, (k + 1) % 3], simp[t, (k + 2) % 3]
     else:
         chain = d.hull
         a, b = chain[:-1], chain[1:]
-    src = np.concatenate([a, b]).astype(np.int64)
-    dst = np.concatenate([b, a]).astype(np.int64)
     rank = np.empty(n, dtype=np.int64)
     rank[np.lexsort((pts[:, 1], pts[:, 0]))] = np.arange(n)
-    order = np.argsort(src * n + rank[dst], kind="stable")
-    ptr = np.zeros(n + 1, dtype=np.int64)
-    ptr[1:] = np.cumsum(np.bincount(src, minlength=n))
-    return ptr, dst[order]
+    return vertex_adjacency(a, b, n, rank)
 
 
 def _pow2_exponent(*arrays: np.ndarray) -> int:

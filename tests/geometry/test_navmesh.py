@@ -25,7 +25,9 @@ import triangle
 from hypothesis import given, settings, strategies as st
 from shapely.geometry import LineString, Point, Polygon
 
-from reference_impl.structures.navmesh import NavMesh, funnel, polygon_triangulation, shortest_path
+from reference_impl.structures.funnel import funnel
+from reference_impl.structures.navmesh import NavMesh, shortest_path
+from reference_impl.structures.polygon import polygon_triangulation
 from reference_impl.exact.verify import exact_coordinates, incircle_exact, orient_exact
 
 
