@@ -360,7 +360,7 @@ class NavMesh:
         chain = self._channel(ts, tg, s, g)
         portals = []
         for t, o in zip(chain, chain[1:]):
-            k = int(np.flatnonzero(self.neighbors[t] == o)[0])
+            k = slot(self.neighbors, t, o)
             right = self.points[self.triangles[t, (k + 1) % 3]]
             left = self.points[self.triangles[t, (k + 2) % 3]]
             portals.append((tuple(left.tolist()), tuple(right.tolist())))

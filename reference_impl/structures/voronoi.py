@@ -51,7 +51,7 @@ from numba import njit
 from numpy.typing import ArrayLike
 
 from reference_impl.mesh.delaunay import Delaunay
-from reference_impl.mesh.topology import each_edge_once, vertex_adjacency
+from reference_impl.mesh.topology import each_edge_once, slot, vertex_adjacency
 from reference_impl.validate import as_points
 
 __all__ = ["voronoi", "as_bbox"]
@@ -309,7 +309,7 @@ def _dual_cells(X, Y, simp, nbrs, CX, CY, sites, start, box, size, out_x, out_y,
             t = nbrs[t, (i + 1) % 3]
             if t < 0 or t == t0:
                 break
-            i = 0 if simp[t, 0] == p else 1 if simp[t, 1] == p else 2
+            i = slot(simp, t, p)
         if on_hull:
             nxt = simp[t0, (i0 + 1) % 3]
             prv = vg[m - 1]
