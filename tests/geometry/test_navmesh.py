@@ -1,4 +1,4 @@
-"""Tests for reference_impl.structures.navmesh: polygons with holes, triangulated, and shortest paths in them.
+"""Tests for reference_impl.structures.navmesh, polygon, funnel: polygons with holes and shortest paths in them.
 
 Run:  .venv/bin/python -m pytest tests/geometry/test_navmesh.py -q
 
