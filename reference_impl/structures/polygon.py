@@ -15,7 +15,7 @@ Run the doctests:  python -m doctest reference_impl/structures/polygon.py
 
 >>> pt = polygon_triangulation([(0, 0), (4, 0), (4, 4), (0, 4)], [[(1, 1), (1, 3), (3, 3), (3, 1)]])
 >>> len(pt.simplices), [r.tolist() for r in pt.rings]
-(8, [[0, 1, 2, 3], [7, 6, 5, 4]])
+(8, [[0, 1, 2, 3], [4, 5, 6, 7]])
 """
 from __future__ import annotations
 
