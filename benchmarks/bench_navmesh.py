@@ -36,7 +36,8 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
 from reference_impl.structures.constrained import ConstrainedDelaunay  # noqa: E402
-from reference_impl.structures.navmesh import NavMesh, polygon_triangulation  # noqa: E402
+from reference_impl.structures.navmesh import NavMesh  # noqa: E402
+from reference_impl.structures.polygon import polygon_triangulation  # noqa: E402
 
 
 def star(rng, k, rmin=0.5):

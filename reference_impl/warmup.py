@@ -90,7 +90,8 @@ def _proximity() -> None:
 def _meshes() -> None:
     from reference_impl.structures.constrained import ConstrainedDelaunay, constrained_delaunay
     from reference_impl.structures.flips import apply_flips, flip_to_delaunay, laplacian_smooth, lawson_flip, mesh_quality, validate_triangulation
-    from reference_impl.structures.navmesh import NavMesh, polygon_triangulation
+    from reference_impl.structures.navmesh import NavMesh
+    from reference_impl.structures.polygon import polygon_triangulation
     square = [(0, 0), (4, 0), (4, 4), (0, 4), (1, 1), (3, 3), (1, 3), (3, 1)]
     cd = ConstrainedDelaunay(square, [(4, 5)])
     cd.simplices, cd.neighbors, cd.constrained, cd.edges(), cd.constraint_edges()

@@ -5,6 +5,8 @@
 - ``removal``: vertex removal from that mesh (numba).
 - ``kernel3d``: the 3D kernel on tetrahedra (numba).
 - ``delaunay`` (``Delaunay``) and ``delaunay3d`` (``Delaunay3D``): the public classes.
+- ``topology``: the helpers of the public 2D layout (``tri``/``nbr`` arrays): slots, edge flip,
+  edge search, neighbours, each edge once, vertex adjacency (CSR), union-find.
 
 Imports only ``reference_impl.exact`` and ``reference_impl.validate``.
 """

@@ -47,7 +47,7 @@ from numba import njit
 
 from reference_impl.mesh import kernel3d as K
 from reference_impl.mesh import status
-from reference_impl.mesh.ordering import _mix
+from reference_impl.mesh.ordering import mix
 from reference_impl.validate import as_points, as_queries
 from reference_impl.exact.predicates3d import workspace3d
 
@@ -109,8 +109,8 @@ def _keys3(P, bits_of, lo, inv, bits, rounds):
         cx = min(top, max(0, int((P[i, 0] - lo[0]) * inv * top)))
         cy = min(top, max(0, int((P[i, 1] - lo[1]) * inv * top)))
         cz = min(top, max(0, int((P[i, 2] - lo[2]) * inv * top)))
-        h = _mix(bits_of[i, 0] * np.uint64(0x9E3779B97F4A7C15)
-                 ^ _mix(bits_of[i, 1] * np.uint64(0xC2B2AE3D27D4EB4F) ^ bits_of[i, 2]))
+        h = mix(bits_of[i, 0] * np.uint64(0x9E3779B97F4A7C15)
+                 ^ mix(bits_of[i, 1] * np.uint64(0xC2B2AE3D27D4EB4F) ^ bits_of[i, 2]))
         tz = 0
         while tz < rounds - 1 and ((h >> np.uint64(tz)) & np.uint64(1)) == np.uint64(0):
             tz += 1
@@ -156,8 +156,13 @@ def _power_of_two_scale(P: np.ndarray) -> int:
 
 
 # ----------------------------------------------------------------------------- the kernel driver
-class _Mesh:
-    """Arrays and state of one kernel run over points already in insertion order."""
+class Mesh:
+    """Arrays and state of one ``kernel3d`` run over points already in insertion order.
+
+    ``Mesh(coords)`` builds at once; then ``flat``, ``dup`` (per internal vertex: an
+    earlier equal vertex or -1), ``state`` and ``extract()`` (tetrahedra, neighbours,
+    ..., hull facets in internal numbering).
+    """
 
     def __init__(self, coords: np.ndarray) -> None:
         n = len(coords)
@@ -231,13 +236,30 @@ def _flat_duplicates(coords: np.ndarray) -> np.ndarray:
     return dup
 
 
-def _representatives(dup: np.ndarray, order: np.ndarray) -> np.ndarray:
-    """rep[internal vertex] = smallest input index among the points equal to it."""
+def representatives(dup: np.ndarray, order: np.ndarray) -> np.ndarray:
+    """rep[internal vertex] = smallest input index among the points equal to it.
+
+    ``dup`` as in ``Mesh.dup``; ``order[i]`` the input index of internal vertex i.
+
+    >>> representatives(np.array([-1, -1, 0]), np.array([2, 0, 1])).tolist()
+    [1, 0, 1]
+    """
     n = len(order)
     root = np.where(dup[:n] >= 0, dup[:n], np.arange(n))
     rep_of_root = np.full(n, np.iinfo(np.int64).max, dtype=np.int64)
     np.minimum.at(rep_of_root, root, order)
     return rep_of_root[root]
+
+
+def input_index_map(order: np.ndarray, rep: np.ndarray) -> np.ndarray:
+    """``index_map`` over the input indices from the per-internal-vertex ``representatives``.
+
+    >>> input_index_map(np.array([2, 0, 1]), np.array([1, 0, 1])).tolist()
+    [0, 1, 1]
+    """
+    out = np.empty(len(order), dtype=np.int64)
+    out[order] = rep
+    return out
 
 
 # ----------------------------------------------------------------------------- public API
@@ -256,8 +278,8 @@ class Delaunay3D:
     def __init__(self, points) -> None:
         self._points = as_points(points, dim=3)
         self._order = insertion_order_3d(self._points)
-        self._mesh = _Mesh(self._points[self._order])
-        self._rep = _representatives(self._mesh.dup, self._order)
+        self._mesh = Mesh(self._points[self._order])
+        self._rep = representatives(self._mesh.dup, self._order)
         if self._mesh.flat:
             self._simp = np.zeros((0, 4), dtype=np.int64)
             self._neig = np.zeros((0, 4), dtype=np.int64)
@@ -298,9 +320,7 @@ class Delaunay3D:
     @property
     def index_map(self) -> np.ndarray:
         """``index_map[i]``: the index point i was merged into (i itself unless a duplicate)."""
-        out = np.empty(len(self._points), dtype=np.int64)
-        out[self._order] = self._rep
-        return out
+        return input_index_map(self._order, self._rep)
 
     @property
     def stats(self) -> dict:

@@ -39,11 +39,11 @@ strictly on its inner side, so no flat tetrahedron is ever created, even on
 cospherical input such as integer grids.  Arrays fill up: ``insert`` then
 returns ``GROW`` without touching the mesh and the caller enlarges them.
 
-Driven from Python by ``delaunay3d._Mesh`` (points already in insertion order):
+Driven from Python by ``delaunay3d.Mesh`` (points already in insertion order):
 
 >>> import numpy as np
->>> from reference_impl.mesh.delaunay3d import _Mesh
->>> m = _Mesh(np.array([[0., 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1], [0.875, 0.875, 0.875]]))
+>>> from reference_impl.mesh.delaunay3d import Mesh
+>>> m = Mesh(np.array([[0., 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1], [0.875, 0.875, 0.875]]))
 >>> simplices, neighbors, _, hull = m.extract()
 >>> simplices.tolist()                 # three tetrahedra around the edge 0-4
 [[0, 1, 3, 4], [0, 3, 2, 4], [0, 2, 1, 4]]

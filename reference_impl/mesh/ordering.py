@@ -48,8 +48,8 @@ def hilbert_index(ix, iy, bits):
 
 
 @njit(cache=True)
-def _mix(h):
-    # splitmix64 finaliser: a well-spread 64-bit hash
+def mix(h):
+    """splitmix64 finaliser: a well-spread 64-bit hash of a uint64 (used by the 2D and 3D orders)."""
     h = (h ^ (h >> np.uint64(30))) * np.uint64(0xBF58476D1CE4E5B9)
     h = (h ^ (h >> np.uint64(27))) * np.uint64(0x94D049BB133111EB)
     return h ^ (h >> np.uint64(31))
@@ -65,7 +65,7 @@ def _keys(x, y, xbits, ybits, xmin, ymin, inv, bits, rounds):
         fy = (y[i] - ymin) * inv
         ix = min(top, max(0, int(fx * top)))
         iy = min(top, max(0, int(fy * top)))
-        h = _mix(xbits[i] * np.uint64(0x9E3779B97F4A7C15) ^ ybits[i])
+        h = mix(xbits[i] * np.uint64(0x9E3779B97F4A7C15) ^ ybits[i])
         # round r has about half the points of round r + 1: trailing zeros are geometric
         tz = 0
         while tz < rounds - 1 and ((h >> np.uint64(tz)) & np.uint64(1)) == np.uint64(0):

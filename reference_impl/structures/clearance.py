@@ -72,6 +72,7 @@ from numba import njit
 from numpy.typing import ArrayLike
 
 from reference_impl.mesh.delaunay import Delaunay, as_delaunay, live_points
+from reference_impl.mesh.topology import each_edge_once, find_root, union_roots
 from reference_impl.validate import as_point
 
 __all__ = ["max_clearance"]
@@ -82,19 +83,13 @@ def _bottleneck(a, b, order, weight, n_nodes, src, dst):
     """Kruskal in decreasing weight (``order``) until src and dst are joined; return the
     weight of the edge that joined them."""
     parent = np.arange(n_nodes)
-
-    def root(x):
-        while parent[x] != x:
-            parent[x] = parent[parent[x]]
-            x = parent[x]
-        return x
-
+    size = np.ones(n_nodes, dtype=np.int64)
     for e in order:
-        ra = root(a[e])
-        rb = root(b[e])
+        ra = find_root(parent, a[e])
+        rb = find_root(parent, b[e])
         if ra != rb:
-            parent[ra] = rb
-            if root(src) == root(dst):
+            union_roots(parent, size, ra, rb)
+            if find_root(parent, src) == find_root(parent, dst):
                 return weight[e]
     return -1.0   # unreachable: the face graph of a triangulation is connected
 
@@ -138,12 +133,8 @@ def max_clearance(points: ArrayLike | Delaunay, start: ArrayLike, goal: ArrayLik
     if fs == fg:
         return ends
     # each edge once: the face opposite vertex k of t and its neighbour (or the outer face)
-    t_idx = np.repeat(np.arange(m), 3)
-    across = nbrs.ravel()
-    keep = (across < 0) | (across > t_idx)
-    a = t_idx[keep]
-    b = np.where(across[keep] < 0, outer, across[keep])
-    k = np.tile(np.arange(3), m)[keep]
+    a, k = each_edge_once(nbrs)
+    b = np.where(nbrs[a, k] < 0, outer, nbrs[a, k])
     u = simp[a, (k + 1) % 3]
     v = simp[a, (k + 2) % 3]
     half = 0.5 * np.hypot(pts[u, 0] - pts[v, 0], pts[u, 1] - pts[v, 1])

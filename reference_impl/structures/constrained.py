@@ -27,7 +27,8 @@ Segments are inserted in a canonical (coordinate) order and ``Delaunay``'s
 output depends only on the point set, so the triangles (cocircular ties
 included) do not depend on the order of the segments or of the points.
 
-``navmesh.polygon_triangulation`` (polygons with holes) is built on this module.
+``polygon.polygon_triangulation`` (polygons with holes) is built on this module
+(``constrain_delaunay``); the mesh helpers it uses are in ``mesh/topology.py``.
 
 Run the doctests:  python -m doctest reference_impl/structures/constrained.py
 
@@ -44,36 +45,19 @@ from numba import njit
 from numpy.typing import ArrayLike
 
 from reference_impl.mesh.delaunay import Delaunay
+from reference_impl.mesh.topology import find_edge, flip, slot, third, unique_edges, vertex_triangles
 from reference_impl.validate import as_index_rows, as_points
 from reference_impl.exact.predicates import incircle_nb, orient2d_nb, workspace
 
-__all__ = ["ConstrainedDelaunay", "constrained_delaunay"]
+__all__ = ["ConstrainedDelaunay", "constrained_delaunay", "ConstrainedMesh", "constrain_delaunay",
+           "fan_search", "insert_segments", "orient_many", "ray_ahead", "format_point"]
 
 _CROSSING, _LOST = 1, 2           # error codes of the numba kernel
 
 
 # ----------------------------------------------------------------------------- numba kernel
 @njit(cache=True, inline="always")
-def _slot(tri, t, v):
-    """Position (0, 1, 2) of vertex v in triangle t, -1 if absent."""
-    for k in range(3):
-        if tri[t, k] == v:
-            return k
-    return -1
-
-
-@njit(cache=True, inline="always")
-def _third(tri, t, u, v):
-    """Position in triangle t of the vertex that is neither u nor v."""
-    for k in range(3):
-        x = tri[t, k]
-        if x != u and x != v:
-            return k
-    return -1
-
-
-@njit(cache=True, inline="always")
-def _ahead(ax, ay, qx, qy, x, y):
+def ray_ahead(ax, ay, qx, qy, x, y):
     """For (x, y) on the line through a and q: does it lie on the ray from a through q?"""
     if ax != qx:
         return (x > ax) == (qx > ax) and x != ax
@@ -100,7 +84,7 @@ def fan_search(tri, nbr, vt, X, Y, a, qx, qy, qv, w):
     t = t0
     ccw = True
     while True:
-        k = _slot(tri, t, a)
+        k = slot(tri, t, a)
         x = tri[t, (k + 1) % 3]
         y = tri[t, (k + 2) % 3]
         if x == qv:
@@ -109,9 +93,9 @@ def fan_search(tri, nbr, vt, X, Y, a, qx, qy, qv, w):
             return t, y
         ox = orient2d_nb(ax, ay, qx, qy, X[x], Y[x], w)
         oy = orient2d_nb(ax, ay, qx, qy, X[y], Y[y], w)
-        if ox == 0 and _ahead(ax, ay, qx, qy, X[x], Y[x]):
+        if ox == 0 and ray_ahead(ax, ay, qx, qy, X[x], Y[x]):
             return t, x
-        if oy == 0 and _ahead(ax, ay, qx, qy, X[y], Y[y]):
+        if oy == 0 and ray_ahead(ax, ay, qx, qy, X[y], Y[y]):
             return t, y
         if ox < 0 and oy > 0:
             return t, -1
@@ -124,7 +108,7 @@ def fan_search(tri, nbr, vt, X, Y, a, qx, qy, qv, w):
                 continue
             ccw = False
             t = t0
-            k = _slot(tri, t, a)
+            k = slot(tri, t, a)
         nx = nbr[t, (k + 2) % 3]              # across edge (a, x)
         if nx < 0:
             return -1, -1
@@ -132,59 +116,24 @@ def fan_search(tri, nbr, vt, X, Y, a, qx, qy, qv, w):
 
 
 @njit(cache=True)
-def _find_edge(tri, nbr, vt, u, v):
-    """A triangle t containing edge (u, v) and the slot of its third vertex; (-1, -1) if absent.
-
-    Same walk around u as ``fan_search``, but by vertex index only (no predicate).
-    """
-    t0 = vt[u]
-    t = t0
-    ccw = True
-    while True:
-        k = _slot(tri, t, u)
-        if tri[t, (k + 1) % 3] == v:
-            return t, (k + 2) % 3
-        if tri[t, (k + 2) % 3] == v:
-            return t, (k + 1) % 3
-        nx = nbr[t, (k + 1) % 3] if ccw else nbr[t, (k + 2) % 3]
-        if nx == t0:
-            return -1, -1
-        if nx < 0 and ccw:
-            ccw = False
-            t = t0
-            nx = nbr[t, (_slot(tri, t, u) + 2) % 3]
-        if nx < 0:
-            return -1, -1
-        t = nx
-
-
-@njit(cache=True)
 def _flip(tri, nbr, cid, vt, t, k):
-    """Flip the edge opposite slot k of t.  t = (p, u, v), o = (q, v, u) become (p, u, q), (q, v, p)."""
+    """``topology.flip`` of the edge opposite slot k of t, carrying the constraint ids and ``vt``.
+
+    t = (p, u, v), o = (q, v, u) become t = (u, q, p), o = (q, v, p); the new edge q-p is free.
+    """
     o = nbr[t, k]
-    p = tri[t, k]
-    u = tri[t, (k + 1) % 3]
-    v = tri[t, (k + 2) % 3]
-    ko = _third(tri, o, u, v)
-    q = tri[o, ko]
-    na, ca = nbr[t, (k + 1) % 3], cid[t, (k + 1) % 3]      # across (v, p)
-    nb, cb = nbr[t, (k + 2) % 3], cid[t, (k + 2) % 3]      # across (p, u)
-    nc, cc = nbr[o, (ko + 1) % 3], cid[o, (ko + 1) % 3]    # across (u, q)
-    nd, cd = nbr[o, (ko + 2) % 3], cid[o, (ko + 2) % 3]    # across (q, v)
-    tri[t, 0], tri[t, 1], tri[t, 2] = p, u, q
-    nbr[t, 0], nbr[t, 1], nbr[t, 2] = nc, o, nb
-    cid[t, 0], cid[t, 1], cid[t, 2] = cc, -1, cb
-    tri[o, 0], tri[o, 1], tri[o, 2] = q, v, p
-    nbr[o, 0], nbr[o, 1], nbr[o, 2] = na, t, nd
+    ko = slot(nbr, o, t)
+    ca = cid[t, (k + 1) % 3]       # across (v, p)
+    cb = cid[t, (k + 2) % 3]       # across (p, u)
+    cc = cid[o, (ko + 1) % 3]      # across (u, q)
+    cd = cid[o, (ko + 2) % 3]      # across (q, v)
+    flip(tri, nbr, t, k)
+    cid[t, 0], cid[t, 1], cid[t, 2] = -1, cb, cc
     cid[o, 0], cid[o, 1], cid[o, 2] = ca, -1, cd
-    if nc >= 0:
-        nbr[nc, _third(tri, nc, u, q)] = t
-    if na >= 0:
-        nbr[na, _third(tri, na, v, p)] = o
-    vt[p] = t
-    vt[u] = t
-    vt[q] = o
-    vt[v] = o
+    vt[tri[t, 0]] = t
+    vt[tri[t, 2]] = t
+    vt[tri[o, 0]] = o
+    vt[tri[o, 1]] = o
 
 
 @njit(cache=True)
@@ -194,11 +143,11 @@ def _legalize(tri, nbr, cid, vt, X, Y, w, stack, top):
         top -= 1
         u = stack[top, 0]
         v = stack[top, 1]
-        t, k = _find_edge(tri, nbr, vt, u, v)
+        t, k = find_edge(tri, nbr, vt, u, v)
         if t < 0 or cid[t, k] >= 0 or nbr[t, k] < 0:
             continue
         o = nbr[t, k]
-        q = tri[o, _third(tri, o, u, v)]
+        q = tri[o, third(tri, o, u, v)]
         a, b, c = tri[t, 0], tri[t, 1], tri[t, 2]
         if incircle_nb(X[a], Y[a], X[b], Y[b], X[c], Y[c], X[q], Y[q], w) > 0:
             p = tri[t, k]
@@ -232,12 +181,12 @@ def _insert_segment(s, a, b, tri, nbr, cid, vt, X, Y, w, through, err, queue, to
             err[0] = _LOST
             return False
         if x >= 0:                                   # the segment runs along edge (a, x)
-            k = _third(tri, t, a, x)
+            k = third(tri, t, a, x)
             if cid[t, k] < 0:
                 cid[t, k] = s
                 o = nbr[t, k]
                 if o >= 0:
-                    cid[o, _third(tri, o, a, x)] = s
+                    cid[o, third(tri, o, a, x)] = s
             if x != b and through[s] < 0:
                 through[s] = x
             a = x
@@ -245,7 +194,7 @@ def _insert_segment(s, a, b, tri, nbr, cid, vt, X, Y, w, through, err, queue, to
         # --- walk from a towards b, collecting the crossed edges
         ax = X[a]
         ay = Y[a]
-        k = _slot(tri, t, a)
+        k = slot(tri, t, a)
         right = tri[t, (k + 1) % 3]
         left = tri[t, (k + 2) % 3]
         kc = k                                       # slot (in t) opposite the crossed edge
@@ -265,15 +214,15 @@ def _insert_segment(s, a, b, tri, nbr, cid, vt, X, Y, w, through, err, queue, to
             t = nbr[t, kc]
             touched[nt] = t
             nt += 1
-            wv = tri[t, _third(tri, t, right, left)]
+            wv = tri[t, third(tri, t, right, left)]
             o = 0 if wv == b else orient2d_nb(ax, ay, bx, by, X[wv], Y[wv], w)
             if o == 0:                               # reached b, or a vertex on the segment
                 break
             if o > 0:
-                kc = _slot(tri, t, left)             # next crossed edge (right, wv)
+                kc = slot(tri, t, left)             # next crossed edge (right, wv)
                 left = wv
             else:
-                kc = _slot(tri, t, right)            # next crossed edge (wv, left)
+                kc = slot(tri, t, right)            # next crossed edge (wv, left)
                 right = wv
         e = wv
         if e != b and through[s] < 0:
@@ -289,10 +238,10 @@ def _insert_segment(s, a, b, tri, nbr, cid, vt, X, Y, w, through, err, queue, to
             v = queue[head, 1]
             head = (head + 1) % cap
             nq -= 1
-            t, k = _find_edge(tri, nbr, vt, u, v)
+            t, k = find_edge(tri, nbr, vt, u, v)
             o = nbr[t, k]
             p = tri[t, k]
-            q = tri[o, _third(tri, o, u, v)]
+            q = tri[o, third(tri, o, u, v)]
             su = orient2d_nb(X[p], Y[p], X[q], Y[q], X[u], Y[u], w)
             sv = orient2d_nb(X[p], Y[p], X[q], Y[q], X[v], Y[v], w)
             if su * sv < 0:                          # strictly convex quadrilateral: flip
@@ -314,13 +263,13 @@ def _insert_segment(s, a, b, tri, nbr, cid, vt, X, Y, w, through, err, queue, to
                 if stall > nq:                       # no flippable edge: cannot happen (Sloan 1993)
                     err[0] = _LOST
                     return False
-        t, k = _find_edge(tri, nbr, vt, a, e)
+        t, k = find_edge(tri, nbr, vt, a, e)
         if t < 0:
             err[0] = _LOST
             return False
         cid[t, k] = s
         o = nbr[t, k]
-        cid[o, _third(tri, o, a, e)] = s
+        cid[o, third(tri, o, a, e)] = s
         # --- restore the constrained Delaunay property in the touched triangles
         top = 0
         for i in range(nt):
@@ -372,7 +321,8 @@ def _as_segments(segments, n: int) -> np.ndarray:
     return as_index_rows(segments, n, 2, "segments")
 
 
-class _Kernel(NamedTuple):
+class ConstrainedMesh(NamedTuple):
+    """The arrays of ``constrain_delaunay``: the mesh in the public layout plus the constraints."""
     tri: np.ndarray
     nbr: np.ndarray
     cid: np.ndarray          # input segment index of each constraint edge, -1 elsewhere
@@ -380,8 +330,17 @@ class _Kernel(NamedTuple):
     error: tuple | None      # (segment, other segment, u, v) for a proper crossing
 
 
-def _run_cdt(d: Delaunay, segments: np.ndarray) -> _Kernel:
-    """Insert ``segments`` (input indices) into the Delaunay triangulation ``d``."""
+def constrain_delaunay(d: Delaunay, segments: np.ndarray) -> ConstrainedMesh:
+    """Insert ``segments`` ((k, 2) validated input indices) into a copy of the triangulation ``d``.
+
+    Returns the ``ConstrainedMesh``; a proper crossing is not raised but reported
+    in its ``error`` field (``ConstrainedDelaunay`` and ``polygon_triangulation``
+    word the message).
+
+    >>> k = constrain_delaunay(Delaunay([(0, 0), (2, -1), (2, 1), (4, 0)]), np.array([[0, 3]]))
+    >>> int((k.cid >= 0).sum()), k.error is None
+    (2, True)
+    """
     pts = d.points
     n = len(pts)
     rep = d.index_map
@@ -390,15 +349,14 @@ def _run_cdt(d: Delaunay, segments: np.ndarray) -> _Kernel:
     cid = np.full(tri.shape, -1, dtype=np.int64)
     through = np.full(len(segments), -1, dtype=np.int64)
     if len(tri) == 0 or len(segments) == 0:
-        return _Kernel(tri, nbr, cid, through, None)
+        return ConstrainedMesh(tri, nbr, cid, through, None)
     seg = rep[segments]
     # canonical order: each segment from its lexicographically smaller end, sorted by coordinates
     a, b = seg[:, 0], seg[:, 1]
     swap = (pts[a, 0] > pts[b, 0]) | ((pts[a, 0] == pts[b, 0]) & (pts[a, 1] > pts[b, 1]))
     seg = np.where(swap[:, None], seg[:, ::-1], seg)
     order = np.lexsort((pts[seg[:, 1], 1], pts[seg[:, 1], 0], pts[seg[:, 0], 1], pts[seg[:, 0], 0]))
-    vt = np.full(n, -1, dtype=np.int64)
-    vt[tri.ravel()] = np.repeat(np.arange(len(tri)), 3)
+    vt = vertex_triangles(tri, n)
     err = np.zeros(5, dtype=np.int64)
     sub_through = np.full(len(seg), -1, dtype=np.int64)
     ok = insert_segments(tri, nbr, cid, vt, pts[:, 0].copy(), pts[:, 1].copy(),
@@ -409,12 +367,17 @@ def _run_cdt(d: Delaunay, segments: np.ndarray) -> _Kernel:
     if not ok:
         if err[0] != _CROSSING:
             raise RuntimeError("constrained Delaunay: lost the segment walk (please report this input)")
-        return _Kernel(tri, nbr, cid, through,
+        return ConstrainedMesh(tri, nbr, cid, through,
                        (int(order[err[1]]), int(order[err[2]]), int(err[3]), int(err[4])))
-    return _Kernel(tri, nbr, cid, through, None)
+    return ConstrainedMesh(tri, nbr, cid, through, None)
 
 
-def _fmt(p) -> str:
+def format_point(p) -> str:
+    """A point as ``(x, y)`` with ``%g`` numbers, for error messages.
+
+    >>> format_point((1.5, 2.0))
+    '(1.5, 2)'
+    """
     return f"({float(p[0]):g}, {float(p[1]):g})"
 
 
@@ -442,7 +405,7 @@ class ConstrainedDelaunay:
     def __init__(self, points: ArrayLike, segments: ArrayLike = ()) -> None:
         self._delaunay = Delaunay(points)
         self._segments = _as_segments(segments, len(self._delaunay.points))
-        k = _run_cdt(self._delaunay, self._segments)
+        k = constrain_delaunay(self._delaunay, self._segments)
         if k.error is not None:
             s, o = k.error[:2]
             raise ValueError(f"segments[{s}] = {self._describe(s)} properly crosses "
@@ -451,7 +414,7 @@ class ConstrainedDelaunay:
 
     def _describe(self, s: int) -> str:
         a, b = self._segments[s]
-        return f"{_fmt(self.points[a])}-{_fmt(self.points[b])}"
+        return f"{format_point(self.points[a])}-{format_point(self.points[b])}"
 
     @property
     def points(self) -> np.ndarray:
@@ -489,7 +452,7 @@ class ConstrainedDelaunay:
         >>> ConstrainedDelaunay([(0, 0), (1, 0), (0, 1)]).edges().tolist()
         [[0, 1], [0, 2], [1, 2]]
         """
-        return _unique_edges(self.simplices, np.ones(self.simplices.shape, bool))
+        return unique_edges(self.simplices, self.neighbors)
 
     def constraint_edges(self) -> np.ndarray:
         """Unique sorted edges (k, 2) that lie on input segments (segments split at vertices).
@@ -497,18 +460,11 @@ class ConstrainedDelaunay:
         >>> ConstrainedDelaunay([(0, 0), (1, 0), (2, 0), (1, 1)], [(0, 2)]).constraint_edges().tolist()
         [[0, 1], [1, 2]]
         """
-        return _unique_edges(self.simplices, self.constrained)
+        return unique_edges(self.simplices, self.neighbors, self.constrained)
 
     def __repr__(self) -> str:
         return (f"ConstrainedDelaunay(n={len(self.points)}, segments={len(self._segments)}, "
                 f"triangles={len(self.simplices)})")
-
-
-def _unique_edges(tri: np.ndarray, mask: np.ndarray) -> np.ndarray:
-    e = np.concatenate([tri[:, [1, 2]][mask[:, 0]], tri[:, [2, 0]][mask[:, 1]], tri[:, [0, 1]][mask[:, 2]]])
-    if len(e) == 0:
-        return np.zeros((0, 2), dtype=np.int64)
-    return np.unique(np.sort(e, axis=1), axis=0)
 
 
 def constrained_delaunay(points: ArrayLike, segments: ArrayLike) -> np.ndarray:

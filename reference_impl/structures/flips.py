@@ -40,6 +40,8 @@ import numpy as np
 from numba import njit
 
 from reference_impl.mesh.delaunay import Delaunay
+from reference_impl.mesh.topology import (edge_keys, find_edge, flip, slot, triangle_neighbors, unique_edges,
+                                          vertex_triangles)
 from reference_impl.validate import as_index_rows, as_points
 from reference_impl.exact.predicates import WORKSPACE_SIZE, incircle_nb, orient2d_nb
 
@@ -71,27 +73,6 @@ def _first_non_ccw(X, Y, T):
     return -1, 1
 
 
-def _neighbours(T: np.ndarray, n: int) -> tuple[np.ndarray, np.ndarray]:
-    """nbr[t, k] = triangle across the edge opposite vertex k (-1 if none), and the
-    directed-edge keys u * n + v of the edges opposite each vertex; ValueError on overlaps."""
-    m = len(T)
-    u = T[:, [1, 2, 0]].ravel()
-    v = T[:, [2, 0, 1]].ravel()
-    keys = u * n + v
-    order = np.argsort(keys, kind="stable")
-    sk = keys[order]
-    rep = np.flatnonzero(sk[1:] == sk[:-1])
-    if len(rep):
-        e = sk[rep[0]]
-        raise ValueError(f"the directed edge {e // n}->{e % n} is used by two triangles: "
-                         "triangles overlap or are not all counter-clockwise")
-    twin = v * n + u
-    at = np.minimum(np.searchsorted(sk, twin), max(len(sk) - 1, 0))
-    found = sk[at] == twin if len(sk) else np.zeros(0, bool)
-    nbr = np.where(found, order[at] // 3, -1).reshape(m, 3)
-    return nbr, keys.reshape(m, 3)
-
-
 def _canonical(T: np.ndarray) -> np.ndarray:
     """Rotate each triangle to start at its smallest index, then sort the rows."""
     if len(T) == 0:
@@ -119,7 +100,8 @@ def _validate(P: np.ndarray, triangles) -> tuple[np.ndarray, np.ndarray, Delauna
         raise ValueError(f"triangle {t} = {T[t].tolist()} is {what}; triangles must be "
                          "counter-clockwise with positive area")
     T = _canonical(T)
-    nbr, keys = _neighbours(T, n)
+    nbr = triangle_neighbors(T, n)
+    keys = edge_keys(T, n)
     hull = np.asarray(d.hull, dtype=np.int64)
     hull_keys = np.sort(hull * n + np.roll(hull, -1))
     boundary = np.sort(keys[nbr < 0])
@@ -160,39 +142,6 @@ def validate_triangulation(points, triangles) -> np.ndarray:
 
 # ----------------------------------------------------------------------------- Lawson flips
 @njit(cache=True)
-def _twin_slot(nbr, o, t):
-    for k in range(3):
-        if nbr[o, k] == t:
-            return k
-    return -1
-
-
-@njit(cache=True)
-def _flip(tri, nbr, t, k):
-    """Flip the edge opposite vertex k of triangle t; return (u, v) of the removed edge.
-
-    t = (w1, u, v) rotated so that w1 = tri[t, k]; its neighbour o across uv has
-    apex w2.  New triangles: t = (u, w2, w1) and o = (w2, v, w1)."""
-    o = nbr[t, k]
-    ko = _twin_slot(nbr, o, t)
-    w1, u, v = tri[t, k], tri[t, (k + 1) % 3], tri[t, (k + 2) % 3]
-    w2 = tri[o, ko]
-    a = nbr[t, (k + 1) % 3]        # across v-w1
-    b = nbr[t, (k + 2) % 3]        # across w1-u
-    c = nbr[o, (ko + 1) % 3]       # across u-w2
-    d = nbr[o, (ko + 2) % 3]       # across w2-v
-    tri[t, 0], tri[t, 1], tri[t, 2] = u, w2, w1
-    nbr[t, 0], nbr[t, 1], nbr[t, 2] = o, b, c
-    tri[o, 0], tri[o, 1], tri[o, 2] = w2, v, w1
-    nbr[o, 0], nbr[o, 1], nbr[o, 2] = a, t, d
-    if a >= 0:
-        nbr[a, _twin_slot(nbr, a, t)] = o
-    if c >= 0:
-        nbr[c, _twin_slot(nbr, c, o)] = t
-    return u, v
-
-
-@njit(cache=True)
 def _lawson(X, Y, tri, nbr):
     """Flip illegal edges until none is left; return the (k, 2) removed edges in order."""
     w = _workspace()
@@ -217,10 +166,10 @@ def _lawson(X, Y, tri, nbr):
         if o < 0:
             continue
         w1, u, v = tri[t, k], tri[t, (k + 1) % 3], tri[t, (k + 2) % 3]
-        w2 = tri[o, _twin_slot(nbr, o, t)]
+        w2 = tri[o, slot(nbr, o, t)]
         if incircle_nb(X[w1], Y[w1], X[u], Y[u], X[v], Y[v], X[w2], Y[w2], w) <= 0:
             continue
-        a, b = _flip(tri, nbr, t, k)
+        a, b = flip(tri, nbr, t, k)
         if nf == len(flips):
             grown = np.empty((2 * nf, 2), dtype=np.int64)
             grown[:nf] = flips
@@ -275,37 +224,20 @@ def _replay(X, Y, tri, nbr, fi, fj, vt, check_illegal):
     w = _workspace()
     for s in range(len(fi)):
         i, j = fi[s], fj[s]
-        t0 = vt[i]
-        t, k = -1, -1
-        # turn around i (both ways, for a hull vertex) looking for the edge i-j
-        for direction in range(2):
-            cur = t0
-            while cur >= 0:
-                p = 0 if tri[cur, 0] == i else (1 if tri[cur, 1] == i else 2)
-                if tri[cur, (p + 1) % 3] == j:
-                    t, k = cur, (p + 2) % 3
-                    break
-                if tri[cur, (p + 2) % 3] == j:
-                    t, k = cur, (p + 1) % 3
-                    break
-                cur = nbr[cur, (p + 2) % 3] if direction == 0 else nbr[cur, (p + 1) % 3]
-                if cur == t0:
-                    cur = -1
-            if t >= 0:
-                break
+        t, k = find_edge(tri, nbr, vt, i, j)
         if t < 0:
             return s, 1
         o = nbr[t, k]
         if o < 0:
             return s, 2
         w1, u, v = tri[t, k], tri[t, (k + 1) % 3], tri[t, (k + 2) % 3]
-        w2 = tri[o, _twin_slot(nbr, o, t)]
+        w2 = tri[o, slot(nbr, o, t)]
         if (orient2d_nb(X[u], Y[u], X[w2], Y[w2], X[w1], Y[w1], w) <= 0
                 or orient2d_nb(X[w2], Y[w2], X[v], Y[v], X[w1], Y[w1], w) <= 0):
             return s, 3
         if check_illegal and incircle_nb(X[w1], Y[w1], X[u], Y[u], X[v], Y[v], X[w2], Y[w2], w) <= 0:
             return s, 4
-        _flip(tri, nbr, t, k)
+        flip(tri, nbr, t, k)
         vt[u], vt[v], vt[w1], vt[w2] = t, o, t, t
     return -1, 0
 
@@ -326,8 +258,7 @@ def apply_flips(points, triangles, flips, only_illegal: bool = True) -> np.ndarr
     F = d.index_map[_as_index_rows(flips, len(P), width=2, what="flip")]
     if len(F) and len(T) == 0:
         raise ValueError("flip 0: there is no triangle, so no edge can be flipped")
-    vt = np.full(len(P), -1, dtype=np.int64)
-    vt[T.ravel()] = np.repeat(np.arange(len(T)), 3)
+    vt = vertex_triangles(T, len(P))
     bad = np.flatnonzero(vt[F.ravel()] < 0)
     if len(bad):
         s = int(bad[0] // 2)
@@ -344,8 +275,9 @@ def apply_flips(points, triangles, flips, only_illegal: bool = True) -> np.ndarr
 
 
 # ----------------------------------------------------------------------------- smoothing
-def _mesh(points, triangles) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Validated points, triangles (strictly CCW, manifold) and boundary-edge vertex mask."""
+def _mesh(points, triangles) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Validated points, triangles (strictly CCW, manifold), their neighbours and the
+    boundary-edge vertex mask."""
     P = as_points(points)
     T = _as_index_rows(triangles, len(P))
     t, s = _first_non_ccw(P[:, 0].copy(), P[:, 1].copy(), T)
@@ -353,13 +285,13 @@ def _mesh(points, triangles) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         what = "degenerate (zero area)" if s == 0 else "clockwise"
         raise ValueError(f"triangle {t} = {T[t].tolist()} is {what}; triangles must be "
                          "counter-clockwise with positive area")
-    nbr, _ = _neighbours(T, len(P))
+    nbr = triangle_neighbors(T, len(P))
     on_boundary = np.zeros(len(P), dtype=bool)
     for k in range(3):
         open_edge = nbr[:, k] < 0
         on_boundary[T[open_edge, (k + 1) % 3]] = True
         on_boundary[T[open_edge, (k + 2) % 3]] = True
-    return P, T, on_boundary
+    return P, T, nbr, on_boundary
 
 
 @njit(cache=True)
@@ -390,7 +322,7 @@ def laplacian_smooth(points, triangles, iterations: int = 1, fixed=None,
     >>> laplacian_smooth(pts, tris)[4].tolist()
     [1.0, 1.0]
     """
-    P, T, on_boundary = _mesh(points, triangles)
+    P, T, nbr, on_boundary = _mesh(points, triangles)
     if isinstance(iterations, bool) or not isinstance(iterations, (int, np.integer)) or iterations < 0:
         raise ValueError(f"iterations must be a non-negative integer, got {iterations!r}")
     n = len(P)
@@ -401,8 +333,7 @@ def laplacian_smooth(points, triangles, iterations: int = 1, fixed=None,
         if idx.size and (idx.dtype.kind not in "iu" or (idx < 0).any() or (idx >= n).any()):
             raise ValueError(f"fixed must be point indices in 0..{n - 1}, got {idx.tolist()[:5]}")
         free[idx.astype(np.int64)] = False
-    e = np.concatenate([T[:, [0, 1]], T[:, [1, 2]], T[:, [2, 0]]])
-    e = np.unique(np.sort(e, axis=1) @ np.array([n, 1], dtype=np.int64))
+    e = unique_edges(T, nbr) @ np.array([n, 1], dtype=np.int64)
     src, dst = np.r_[e // n, e % n], np.r_[e % n, e // n]    # each neighbour once, both ways
     keep = free[src]
     src, dst = src[keep], dst[keep]
@@ -449,10 +380,9 @@ def mesh_quality(points, triangles) -> dict:
     >>> round(q["min_angle"], 6), round(q["radius_ratio_max"], 6), q["triangles"]
     (60.0, 1.0, 1)
     """
-    P, T, _ = _mesh(points, triangles)
+    P, T, nbr, _ = _mesh(points, triangles)
     if len(T) == 0:
         raise ValueError("mesh_quality needs at least one triangle")
-    nbr, _ = _neighbours(T, len(P))
     A, B, C = P[T[:, 0]], P[T[:, 1]], P[T[:, 2]]
     scale = np.max(np.abs(np.concatenate([B - A, C - A], axis=1)), axis=1)[:, None]
     ab, bc, ca = (B - A) / scale, (C - B) / scale, (A - C) / scale   # scale-free, no overflow

@@ -2,20 +2,12 @@
 
 The free space is the closed region inside ``boundary`` and outside the open
 holes: a path may run along walls and touch hole corners.  ``NavMesh`` builds
-it once (``polygon_triangulation``, below); each
+it once (``polygon.polygon_triangulation``: the constrained Delaunay
+triangulation of the polygon, which also checks that it is simple); each
 ``shortest_path(start, goal)`` query then returns the polyline
 ``[start, corner, ..., goal]`` of *optimal* length, or ``None`` when start or
 goal is not in the free space.  ``shortest_path(boundary, holes, start, goal)``
 does both in one call (the library behind the course's ``navmesh`` problem).
-
-The mesh: ``polygon_triangulation(boundary, holes)`` runs the constrained
-Delaunay triangulation (``constrained.py``) on the polygon's vertices with its
-edges as constraints.  That also checks, exactly, that boundary and holes are
-simple and disjoint with every hole inside the boundary: a proper crossing is
-caught by the segment insertion, a vertex on another edge by the record of
-split segments, a repeated vertex by the duplicate map, a misplaced hole by the
-flood fill.  The triangles kept are those a flood fill reaches from the inside
-of the boundary without crossing a constraint edge.
 
 How a query works, and why the answer is optimal:
 
@@ -23,8 +15,8 @@ How a query works, and why the answer is optimal:
    triangle: the segment is the answer (a triangle is convex).
 2. *Channel and funnel* (the game-industry navmesh method): A* over the
    triangle adjacency (cost between edge midpoints) gives a channel of
-   triangles; the funnel algorithm ("simple stupid funnel", with exact
-   ``orient2d`` for every funnel test) pulls the string through it.  The
+   triangles; the funnel algorithm (``funnel.py``, with exact ``orient2d``
+   for every funnel test) pulls the string through it.  The
    result is a valid path, so its length U is an upper bound.  It is optimal
    when there are no holes (the channel is then unique), but with holes the
    cheapest channel in the triangle graph need not hold the shortest path.
@@ -60,161 +52,22 @@ from __future__ import annotations
 
 import heapq
 import math
-from typing import NamedTuple, Sequence
+from typing import Sequence
 
 import numpy as np
 from numba import njit
 from numpy.typing import ArrayLike
 
-from reference_impl.structures.constrained import _ahead, _fmt, _run_cdt, _slot, _third, fan_search, orient_many
-from reference_impl.mesh.delaunay import Delaunay
-from reference_impl.validate import as_point, as_points
-from reference_impl.exact.predicates import orient2d, orient2d_nb, workspace
+from reference_impl.exact.predicates import orient2d_nb, workspace
+from reference_impl.mesh.topology import slot, third, vertex_triangles
+from reference_impl.structures.constrained import fan_search, orient_many, ray_ahead
+from reference_impl.structures.funnel import funnel
+from reference_impl.structures.polygon import polygon_triangulation
+from reference_impl.validate import as_point
 
-__all__ = ["NavMesh", "shortest_path", "funnel", "PolygonTriangulation", "polygon_triangulation"]
+__all__ = ["NavMesh", "shortest_path"]
 
 Point = tuple[float, float]
-
-
-# ----------------------------------------------------------------------------- the free space
-class PolygonTriangulation(NamedTuple):
-    """Triangles of a polygon with holes.
-
-    ``points``: the vertices, boundary first then each hole (input order, closing
-    duplicates removed); ``simplices`` (m, 3) counter-clockwise; ``neighbors``
-    (m, 3), -1 across the boundary and hole edges; ``rings``: vertex indices of
-    the boundary (counter-clockwise) then of each hole (clockwise), so the free
-    space is always on the left of a ring edge.
-    """
-    points: np.ndarray
-    simplices: np.ndarray
-    neighbors: np.ndarray
-    rings: tuple
-
-
-def _clean_ring(ring, name: str) -> np.ndarray:
-    """Validated (k, 2) ring without repeated consecutive vertices or a closing copy of the first."""
-    pts = as_points(ring, name=name)
-    if len(pts):
-        keep = np.ones(len(pts), dtype=bool)
-        keep[1:] = (pts[1:] != pts[:-1]).any(axis=1)
-        pts = pts[keep]
-        if len(pts) > 1 and (pts[0] == pts[-1]).all():
-            pts = pts[:-1]
-    if len(pts) < 3:
-        raise ValueError(f"{name} needs at least 3 distinct vertices, got {len(pts)}")
-    return pts
-
-
-def _winding(p, ring_pts: np.ndarray) -> int:
-    """Exact winding number of ring_pts around p (p not on the ring)."""
-    wn = 0
-    for a, b in zip(ring_pts, np.roll(ring_pts, -1, axis=0)):
-        if a[1] <= p[1] < b[1] and orient2d(a, b, p) > 0:
-            wn += 1
-        elif b[1] <= p[1] < a[1] and orient2d(a, b, p) < 0:
-            wn -= 1
-    return wn
-
-
-def polygon_triangulation(boundary: ArrayLike, holes: Sequence[ArrayLike] | None = ()) -> PolygonTriangulation:
-    """Constrained Delaunay triangulation of a polygon with holes (triangles inside only).
-
-    ``boundary``: (k, 2) vertices of a simple polygon, either orientation (a
-    closing copy of the first vertex is allowed).  ``holes``: simple polygons
-    strictly inside the boundary, pairwise disjoint, not touching the boundary
-    or each other.  Violations raise ``ValueError`` naming the offending edges,
-    vertices or holes.  Returns a ``PolygonTriangulation``.
-
-    >>> pt = polygon_triangulation([(0, 0), (2, 0), (2, 2), (1, 1), (0, 2)])
-    >>> len(pt.simplices), pt.rings[0].tolist()
-    (3, [0, 1, 2, 3, 4])
-    >>> polygon_triangulation([(0, 0), (2, 0), (0, 2), (2, 2)])
-    Traceback (most recent call last):
-    ...
-    ValueError: polygon is not simple: boundary edge 3 (2, 2)-(0, 0) crosses boundary edge 1 (2, 0)-(0, 2)
-    """
-    if holes is None:
-        holes = ()
-    if isinstance(holes, (str, bytes)):
-        raise ValueError("holes must be a sequence of polygons")
-    names = ["boundary"] + [f"hole {h}" for h in range(len(holes))]
-    rings = [_clean_ring(boundary, "boundary")] + [_clean_ring(h, f"holes[{i}]") for i, h in enumerate(holes)]
-    sizes = np.array([len(r) for r in rings])
-    offset = np.concatenate([[0], np.cumsum(sizes)])
-    pts = np.vstack(rings)
-    ring_of = np.repeat(np.arange(len(rings)), sizes)
-    local = np.arange(len(pts)) - offset[ring_of]
-    nxt = np.arange(len(pts)) + 1
-    nxt[offset[1:] - 1] = offset[:-1]
-    seg = np.stack([np.arange(len(pts)), nxt], axis=1)
-
-    def vname(i):
-        return f"{names[ring_of[i]]} vertex {local[i]} {_fmt(pts[i])}"
-
-    def ename(s):
-        return f"{names[ring_of[s]]} edge {local[s]} {_fmt(pts[s])}-{_fmt(pts[nxt[s]])}"
-
-    d = Delaunay(pts)
-    rep = d.index_map
-    dup = np.flatnonzero(rep != np.arange(len(pts)))
-    if len(dup):
-        raise ValueError(f"polygon is not simple: {vname(dup[0])} repeats {vname(rep[dup[0]])}")
-    if len(d.simplices) == 0:
-        raise ValueError("polygon has zero area: all vertices are collinear")
-    k = _run_cdt(d, seg)
-    if k.error is not None:
-        s, o = sorted(k.error[:2])
-        raise ValueError(f"polygon is not simple: {ename(o)} crosses {ename(s)}")
-    hit = np.flatnonzero(k.through >= 0)
-    if len(hit):
-        s = hit[0]
-        raise ValueError(f"polygon is not simple: {vname(k.through[s])} lies on {ename(s)}")
-    # orientation from the lexicographically smallest vertex (a convex corner): boundary CCW, holes CW
-    prv = np.arange(len(pts)) - 1
-    prv[offset[:-1]] = offset[1:] - 1
-    lowest = np.lexsort((pts[:, 1], pts[:, 0], ring_of))[offset[:-1]]
-    ccw = orient_many(pts[:, 0].copy(), pts[:, 1].copy(), prv[lowest], lowest, nxt[lowest], workspace()) > 0
-    flip = ccw != (np.arange(len(rings)) == 0)
-    succ = np.where(flip[ring_of], prv, nxt)              # next vertex along the normalised ring
-    ring_idx = [np.arange(offset[r + 1] - 1, offset[r] - 1, -1) if flip[r] else np.arange(offset[r], offset[r + 1])
-                for r in range(len(rings))]
-    # flood fill from the inside of the boundary, never crossing a constraint edge
-    tri, nbr, cid = k.tri, k.nbr, k.cid
-    m, n = len(tri), len(pts)
-    key = (tri[:, [1, 2, 0]] * n + tri[:, [2, 0, 1]]).ravel()      # directed edge opposite slot k
-    order = np.argsort(key)
-    sorted_key = key[order]
-
-    def left_triangles(u):
-        """Triangle left of each normalised ring edge u -> succ[u] (-1 if none), and the ring of u."""
-        v = succ[u]
-        pos = np.minimum(np.searchsorted(sorted_key, u * n + v), len(key) - 1)
-        return np.where(sorted_key[pos] == u * n + v, order[pos] // 3, -1), ring_of[u]
-
-    t_idx, k_idx = np.nonzero((nbr >= 0) & (cid < 0))
-    from scipy.sparse import coo_matrix          # (imported here: scipy.sparse takes 0.2-0.4 s to import)
-    from scipy.sparse.csgraph import connected_components
-
-    graph = coo_matrix((np.ones(len(t_idx)), (t_idx, nbr[t_idx, k_idx])), shape=(m, m))
-    _, label = connected_components(graph, directed=False)
-    seeds, _ = left_triangles(ring_idx[0])
-    free = np.isin(label, label[seeds])
-    if len(rings) > 1:
-        side, owner = left_triangles(np.arange(offset[1], len(pts)))
-        bad = np.flatnonzero((side < 0) | ~free[side])
-        if len(bad):
-            h = int(owner[bad[0]])
-            p = rings[h][0]
-            if _winding(p, rings[0]) == 0:
-                raise ValueError(f"{names[h]} lies outside the boundary")
-            inside = [g for g in range(1, len(rings)) if g != h and _winding(p, rings[g]) != 0]
-            where = f"inside hole {inside[0] - 1}" if inside else "around another hole"
-            raise ValueError(f"{names[h]} lies {where}; holes must be disjoint")
-    new = np.full(m + 1, -1, dtype=np.int64)
-    new[np.flatnonzero(free)] = np.arange(int(free.sum()))
-    nb = np.where(cid[free] >= 0, -1, new[nbr[free]])
-    return PolygonTriangulation(pts, tri[free].copy(), nb, tuple(ring_idx))
 
 
 # ----------------------------------------------------------------------------- numba kernels
@@ -268,7 +121,7 @@ def _visible(tri, nbr, vt, X, Y, pv, pt, px, py, qx, qy, qv, w):
             return True
         for k in range(3):
             x = tri[t, k]
-            if orient2d_nb(px, py, qx, qy, X[x], Y[x], w) == 0 and _ahead(px, py, qx, qy, X[x], Y[x]):
+            if orient2d_nb(px, py, qx, qy, X[x], Y[x], w) == 0 and ray_ahead(px, py, qx, qy, X[x], Y[x]):
                 v = x                                  # the segment leaves t through vertex x
                 break
         if v < 0:
@@ -295,7 +148,7 @@ def _visible(tri, nbr, vt, X, Y, pv, pt, px, py, qx, qy, qv, w):
                     return True
                 v = x
                 continue
-            k = _slot(tri, t, v)
+            k = slot(tri, t, v)
             right = tri[t, (k + 1) % 3]
             left = tri[t, (k + 2) % 3]
             if orient2d_nb(X[right], Y[right], X[left], Y[left], qx, qy, w) >= 0:
@@ -305,7 +158,7 @@ def _visible(tri, nbr, vt, X, Y, pv, pt, px, py, qx, qy, qv, w):
                 return False
             v = -1
         # inside triangle t, entered through the edge (left, right)
-        wv = tri[t, _third(tri, t, right, left)]
+        wv = tri[t, third(tri, t, right, left)]
         s = orient2d_nb(px, py, qx, qy, X[wv], Y[wv], w)
         if s == 0:
             if _reached(px, py, qx, qy, X[wv], Y[wv]):
@@ -314,12 +167,12 @@ def _visible(tri, nbr, vt, X, Y, pv, pt, px, py, qx, qy, qv, w):
         elif s > 0:                                    # leave through (right, wv)
             if orient2d_nb(X[right], Y[right], X[wv], Y[wv], qx, qy, w) >= 0:
                 return True
-            t = nbr[t, _slot(tri, t, left)]
+            t = nbr[t, slot(tri, t, left)]
             left = wv
         else:                                          # leave through (wv, left)
             if orient2d_nb(X[wv], Y[wv], X[left], Y[left], qx, qy, w) >= 0:
                 return True
-            t = nbr[t, _slot(tri, t, right)]
+            t = nbr[t, slot(tri, t, right)]
             right = wv
         if v < 0 and t < 0:
             return False
@@ -399,51 +252,6 @@ def _astar(tri, nbr, vt, X, Y, prv, nxt, reflex, sv, st, sx, sy, gx, gy, limit, 
     return out
 
 
-# ----------------------------------------------------------------------------- funnel
-def funnel(start: Point, goal: Point, portals: Sequence[tuple[Point, Point]]) -> list[Point]:
-    """String pulling through a channel ("simple stupid funnel", exact orientation tests).
-
-    ``portals`` are the edges crossed in order, each as ``(left, right)`` seen
-    walking from start to goal.  Returns the taut path ``[start, ..., goal]``
-    inside the channel: the funnel (apex, left ray, right ray) narrows portal by
-    portal; when one side would cross the other, the crossed side's point is a
-    corner of the path and becomes the new apex.  A side whose point is the
-    apex itself (a portal ending at the apex) constrains nothing.
-
-    >>> funnel((0, 0), (4, 0), [((1, 1), (1, -1)), ((3, 3), (3, 0.5))])
-    [(0, 0), (3, 0.5), (4, 0)]
-    """
-    gates = [(start, start)] + list(portals) + [(goal, goal)]
-    path = [start]
-    apex = left = right = start
-    apex_i = left_i = right_i = 0
-    i = 1
-    while i < len(gates):
-        new_left, new_right = gates[i]
-        if orient2d(apex, right, new_right) >= 0:               # the right side narrows
-            if apex in (right, left) or orient2d(apex, left, new_right) < 0:
-                right, right_i = new_right, i
-            else:                                               # crosses the left side: corner
-                path.append(left)
-                apex, apex_i = left, left_i
-                right, right_i = apex, apex_i
-                i = apex_i + 1
-                continue
-        if orient2d(apex, left, new_left) <= 0:                 # the left side narrows
-            if apex in (left, right) or orient2d(apex, right, new_left) > 0:
-                left, left_i = new_left, i
-            else:                                               # crosses the right side: corner
-                path.append(right)
-                apex, apex_i = right, right_i
-                left, left_i = apex, apex_i
-                i = apex_i + 1
-                continue
-        i += 1
-    if path[-1] != goal:
-        path.append(goal)
-    return path
-
-
 # ----------------------------------------------------------------------------- the mesh
 class NavMesh:
     """A triangulated free space (polygon minus holes) answering shortest-path queries.
@@ -476,8 +284,7 @@ class NavMesh:
         # reflex: the free space (left of every ring edge) turns right there, an angle over 180 degrees
         turn = orient_many(self._X, self._Y, self._prv, np.arange(n), self._nxt, self._w)
         self.reflex = np.flatnonzero(turn < 0)
-        self._vt = np.full(n, -1, dtype=np.int64)
-        self._vt[self.triangles.ravel()] = np.repeat(np.arange(len(self.triangles)), 3)
+        self._vt = vertex_triangles(self.triangles, n)
         self._vertex_at = {tuple(p): i for i, p in enumerate(self.points.tolist())}
 
     def locate(self, p: ArrayLike) -> int:
@@ -553,7 +360,7 @@ class NavMesh:
         chain = self._channel(ts, tg, s, g)
         portals = []
         for t, o in zip(chain, chain[1:]):
-            k = int(np.flatnonzero(self.neighbors[t] == o)[0])
+            k = slot(self.neighbors, t, o)
             right = self.points[self.triangles[t, (k + 1) % 3]]
             left = self.points[self.triangles[t, (k + 2) % 3]]
             portals.append((tuple(left.tolist()), tuple(right.tolist())))

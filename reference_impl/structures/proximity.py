@@ -48,6 +48,7 @@ from numba import njit
 from numpy.typing import ArrayLike
 
 from reference_impl.mesh.delaunay import Delaunay, as_delaunay
+from reference_impl.mesh.topology import each_edge_once, find_root, union_roots, vertex_adjacency
 from reference_impl.exact.expansion import EPSILON, add, diff, mul, negate, two_diff, two_product, two_sum
 
 __all__ = ["Pair", "euclidean_mst", "closest_pair", "gabriel_graph", "relative_neighborhood_graph"]
@@ -211,30 +212,17 @@ class _Graph:
             a1 = a2 = np.full(len(u), -1, dtype=np.int64)
         else:
             nb = np.asarray(d.neighbors, dtype=np.int64)
-            t = np.arange(len(s))
-            us, vs, b1, b2 = [], [], [], []
-            for k in range(3):
-                keep = (nb[:, k] < 0) | (nb[:, k] > t)      # each edge once
-                uu, vv = s[keep, (k + 1) % 3], s[keep, (k + 2) % 3]
-                o = nb[keep, k]
-                us.append(uu)
-                vs.append(vv)
-                b1.append(s[keep, k])
-                b2.append(np.where(o >= 0, s[np.maximum(o, 0)].sum(axis=1) - uu - vv, -1))
-            u, v = np.concatenate(us), np.concatenate(vs)
-            a1, a2 = np.concatenate(b1), np.concatenate(b2)
+            t, k = each_edge_once(nb)
+            u, v = s[t, (k + 1) % 3], s[t, (k + 2) % 3]
+            o = nb[t, k]
+            a1 = s[t, k]
+            a2 = np.where(o >= 0, s[np.maximum(o, 0)].sum(axis=1) - u - v, -1)
         self.u, self.v = np.minimum(u, v), np.maximum(u, v)
         self.a1, self.a2 = a1, a2
 
     def adjacency(self) -> tuple[np.ndarray, np.ndarray]:
         """CSR (indptr, indices) of the Delaunay graph."""
-        n = len(self.P)
-        src = np.concatenate([self.u, self.v])
-        dst = np.concatenate([self.v, self.u])
-        order = np.argsort(src, kind="stable")
-        indptr = np.zeros(n + 1, dtype=np.int64)
-        np.cumsum(np.bincount(src, minlength=n), out=indptr[1:])
-        return indptr, dst[order]
+        return vertex_adjacency(self.u, self.v, len(self.P))
 
 
 def _sorted_edges(u: np.ndarray, v: np.ndarray) -> np.ndarray:
@@ -430,19 +418,11 @@ def _kruskal(n, u, v, order, target):
     for idx in order:
         if k == target:
             break
-        a, b = u[idx], v[idx]
-        while parent[a] != a:
-            parent[a] = parent[parent[a]]
-            a = parent[a]
-        while parent[b] != b:
-            parent[b] = parent[parent[b]]
-            b = parent[b]
+        a = find_root(parent, u[idx])
+        b = find_root(parent, v[idx])
         if a == b:
             continue
-        if size[a] < size[b]:
-            a, b = b, a
-        parent[b] = a
-        size[a] += size[b]
+        union_roots(parent, size, a, b)
         out[k, 0] = u[idx]
         out[k, 1] = v[idx]
         k += 1

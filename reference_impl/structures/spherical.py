@@ -40,8 +40,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from reference_impl.mesh import kernel3d as K
-from reference_impl.mesh.delaunay3d import _Mesh, _representatives, insertion_order_3d
+from reference_impl.mesh.delaunay3d import Mesh, input_index_map, insertion_order_3d, representatives
+from reference_impl.mesh.topology import triangle_neighbors
 from reference_impl.validate import as_points
 from reference_impl.exact.predicates3d import orient3d_batch
 
@@ -120,10 +120,10 @@ class SphericalDelaunay:
         self.xyz = _directions(points)
         n = len(self.xyz)
         order = insertion_order_3d(self.xyz)
-        mesh = _Mesh(np.vstack([np.zeros((1, 3)), self.xyz[order]]))   # the centre first
+        mesh = Mesh(np.vstack([np.zeros((1, 3)), self.xyz[order]]))   # the centre first
         dup = mesh.dup[1:n + 1]
         dup = np.where(dup > 0, dup - 1, -1)
-        rep = _representatives(dup, order)
+        rep = representatives(dup, order)
         self._order, self._rep = order, rep
         if mesh.flat:
             self._tri = np.zeros((0, 3), dtype=np.int64)
@@ -162,26 +162,13 @@ class SphericalDelaunay:
     @property
     def index_map(self) -> np.ndarray:
         """``index_map[i]``: the index point i was merged into (i itself unless a duplicate)."""
-        out = np.empty(len(self.xyz), dtype=np.int64)
-        out[self._order] = self._rep
-        return out
+        return input_index_map(self._order, self._rep)
 
     @property
     def neighbors(self) -> np.ndarray:
         """(m, 3): the triangle across the edge opposite vertex k, -1 where there is none."""
         if self._nbr is None:
-            t = self._tri
-            m = len(t)
-            big = np.int64(len(self.xyz) + 1)
-            u = np.concatenate([t[:, 1], t[:, 2], t[:, 0]])          # edge opposite vertex k
-            v = np.concatenate([t[:, 2], t[:, 0], t[:, 1]])
-            key = u * big + v
-            srt = np.argsort(key)
-            twin = v * big + u
-            pos = np.clip(np.searchsorted(key[srt], twin), 0, max(len(key) - 1, 0))
-            hit = key[srt][pos] == twin if len(key) else np.zeros(0, bool)
-            other = np.where(hit, srt[pos] % max(m, 1), -1)
-            self._nbr = other.reshape(3, m).T.copy()
+            self._nbr = triangle_neighbors(self._tri, len(self.xyz))
         return self._nbr
 
     def __repr__(self) -> str:

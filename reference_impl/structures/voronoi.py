@@ -51,6 +51,7 @@ from numba import njit
 from numpy.typing import ArrayLike
 
 from reference_impl.mesh.delaunay import Delaunay, as_delaunay
+from reference_impl.mesh.topology import each_edge_once, slot, vertex_adjacency
 
 __all__ = ["voronoi", "as_bbox"]
 
@@ -98,22 +99,14 @@ def delaunay_adjacency(d: Delaunay) -> tuple[np.ndarray, np.ndarray]:
     n = len(pts)
     simp, nbrs = d.simplices, d.neighbors
     if len(simp):
-        # the edge opposite vertex k of triangle t, kept once: by t if across is a hull or larger t
-        a = simp[:, [1, 2, 0]]
-        b = simp[:, [2, 0, 1]]
-        keep = (nbrs < 0) | (nbrs > np.arange(len(simp))[:, None])
-        a, b = a[keep], b[keep]
+        t, k = each_edge_once(nbrs)
+        a, b = simp[t, (k + 1) % 3], simp[t, (k + 2) % 3]
     else:
         chain = d.hull
         a, b = chain[:-1], chain[1:]
-    src = np.concatenate([a, b]).astype(np.int64)
-    dst = np.concatenate([b, a]).astype(np.int64)
     rank = np.empty(n, dtype=np.int64)
     rank[np.lexsort((pts[:, 1], pts[:, 0]))] = np.arange(n)
-    order = np.argsort(src * n + rank[dst], kind="stable")
-    ptr = np.zeros(n + 1, dtype=np.int64)
-    ptr[1:] = np.cumsum(np.bincount(src, minlength=n))
-    return ptr, dst[order]
+    return vertex_adjacency(a, b, n, rank)
 
 
 def _pow2_exponent(*arrays: np.ndarray) -> int:
@@ -315,7 +308,7 @@ def _dual_cells(X, Y, simp, nbrs, CX, CY, sites, start, box, size, out_x, out_y,
             t = nbrs[t, (i + 1) % 3]
             if t < 0 or t == t0:
                 break
-            i = 0 if simp[t, 0] == p else 1 if simp[t, 1] == p else 2
+            i = slot(simp, t, p)
         if on_hull:
             nxt = simp[t0, (i0 + 1) % 3]
             prv = vg[m - 1]

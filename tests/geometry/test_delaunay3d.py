@@ -18,7 +18,7 @@ import pytest
 from hypothesis import given, strategies as st
 from scipy.spatial import ConvexHull, Delaunay as QhullDelaunay
 
-from reference_impl.mesh.delaunay3d import (Delaunay3D, _Mesh, delaunay_3d, hilbert_index_3d,
+from reference_impl.mesh.delaunay3d import (Delaunay3D, Mesh, delaunay_3d, hilbert_index_3d,
                                        insertion_order_3d)
 from reference_impl.exact.verify import check_delaunay_3d
 
@@ -306,12 +306,12 @@ def test_arrays_grow_when_needed():
     """Large cavities and O(n^2) outputs: the kernel asks for room and resumes."""
     sphere = unit_sphere(1500, seed=4)
     coords = np.vstack([sphere, [[0.0, 0.0, 0.0]]])          # centre last: its cavity is everything
-    m = _Mesh(coords)
+    m = Mesh(coords)
     simp, _, _, _ = m.extract()
     assert len(m.bad) > 1024                                   # the cavity arrays grew
     assert len(simp) and (simp == 1500).any(axis=1).sum() == len(ConvexHull(sphere).simplices)
     curve = DEGENERATE["skew-lines"]
-    m2 = _Mesh(curve[insertion_order_3d(curve)])
+    m2 = Mesh(curve[insertion_order_3d(curve)])
     assert len(m2.mark) > 7 * len(curve) + 64                  # the tetrahedron arrays grew
     assert check_delaunay_3d(curve, delaunay_3d(curve))[0]
 

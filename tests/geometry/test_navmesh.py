@@ -1,4 +1,4 @@
-"""Tests for reference_impl.structures.navmesh: polygons with holes, triangulated, and shortest paths in them.
+"""Tests for reference_impl.structures.navmesh, polygon, funnel: polygons with holes and shortest paths in them.
 
 Run:  .venv/bin/python -m pytest tests/geometry/test_navmesh.py -q
 
@@ -26,7 +26,9 @@ from hypothesis import given, settings, strategies as st
 from shapely.geometry import LineString, Point, Polygon
 
 from grader.problems import load_problem
-from reference_impl.structures.navmesh import NavMesh, funnel, polygon_triangulation
+from reference_impl.structures.funnel import funnel
+from reference_impl.structures.navmesh import NavMesh
+from reference_impl.structures.polygon import polygon_triangulation
 from reference_impl.exact.verify import exact_coordinates, incircle_exact, orient_exact
 
 shortest_path = load_problem("navmesh").generator.shortest_path   # the problem's adapter

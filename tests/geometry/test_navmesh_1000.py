@@ -37,7 +37,8 @@ import triangle
 from shapely.geometry import LinearRing, Point, Polygon
 
 from exact_oracle import exact, incircle, orient
-from reference_impl.structures.navmesh import polygon_triangulation, shortest_path
+from reference_impl.structures.navmesh import shortest_path
+from reference_impl.structures.polygon import polygon_triangulation
 
 CASES = 1000
 
