@@ -1,6 +1,6 @@
 """3D Delaunay tetrahedralisation against independent oracles.
 
-Run: .venv/bin/python -m pytest tests/geometry/test_delaunay3d.py -q
+Run: .venv/bin/python -m pytest tests/mesh/test_delaunay3d.py -q
 
 Oracles: the exact validity checker ``reference_impl.exact.verify.check_delaunay_3d``
 (Python integers; it shares no code with the numba kernel), a brute-force empty-sphere check on small sets,

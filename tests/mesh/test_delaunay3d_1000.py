@@ -1,7 +1,7 @@
 """delaunay_3d / Delaunay3D: 1000 random small cases and the 3D degenerate families, against
 independent oracles.
 
-Run:  .venv/bin/python -m pytest tests/geometry/test_delaunay3d_1000.py -q
+Run:  .venv/bin/python -m pytest tests/mesh/test_delaunay3d_1000.py -q
 
 Oracles (nothing shared with the library):
 

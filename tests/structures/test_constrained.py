@@ -1,6 +1,6 @@
 """Tests for reference_impl.structures.constrained: the constrained Delaunay triangulation.
 
-Run:  .venv/bin/python -m pytest tests/geometry/test_constrained.py -q
+Run:  .venv/bin/python -m pytest tests/structures/test_constrained.py -q
 
 Oracles: Shewchuk's Triangle (the ``triangle`` package, 'p' switch) on inputs in
 general position, where the CDT is unique; an exact checker written here with

@@ -1,6 +1,6 @@
 """constrained_delaunay: 1000 random small cases and every degenerate family, against oracles.
 
-Run:  .venv/bin/python -m pytest tests/geometry/test_constrained_1000.py -q
+Run:  .venv/bin/python -m pytest tests/structures/test_constrained_1000.py -q
 
 Oracles (nothing shared with the library):
 

@@ -1,6 +1,6 @@
 """Tests of reference_impl.structures.flips: Lawson flips, flip replay, Laplacian smoothing, mesh quality.
 
-    .venv/bin/python -m pytest tests/geometry/test_flips.py -q
+    .venv/bin/python -m pytest tests/structures/test_flips.py -q
 
 Oracles: an independent flip replayer written here on Python integers (a dict
 of directed edges; convexity and the in-circle test decided exactly) checks that

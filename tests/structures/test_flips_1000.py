@@ -1,7 +1,7 @@
 """laplacian_smooth and mesh_quality: 1000 random small meshes each and the degenerate
 families, against oracles written here.
 
-Run:  .venv/bin/python -m pytest tests/geometry/test_flips_1000.py -q
+Run:  .venv/bin/python -m pytest tests/structures/test_flips_1000.py -q
 
 Oracles (nothing shared with the library):
 

@@ -1,6 +1,6 @@
 """Tests for reference_impl.structures.navmesh: polygons with holes, triangulated, and shortest paths in them.
 
-Run:  .venv/bin/python -m pytest tests/geometry/test_navmesh.py -q
+Run:  .venv/bin/python -m pytest tests/structures/test_navmesh.py -q
 
 Oracle: the visibility graph of all polygon vertices plus start and goal, with
 an edge wherever shapely says the closed polygon (with holes) covers the

@@ -1,7 +1,7 @@
 """navmesh: polygon_triangulation and shortest_path on 1000 random small cases each, and on
 degenerate rooms, against independent oracles.
 
-Run:  .venv/bin/python -m pytest tests/geometry/test_navmesh_1000.py -q
+Run:  .venv/bin/python -m pytest tests/structures/test_navmesh_1000.py -q
 
 Oracles (nothing shared with the library):
 

@@ -1,6 +1,6 @@
 """Spherical Delaunay triangulation against independent oracles.
 
-Run: .venv/bin/python -m pytest tests/geometry/test_spherical.py -q
+Run: .venv/bin/python -m pytest tests/structures/test_spherical.py -q
 
 Oracles: ``scipy.spatial.ConvexHull`` on general-position sets (the hull facets
 of points on a sphere are the spherical Delaunay triangles), and a brute-force

@@ -1,7 +1,7 @@
 """spherical_delaunay: 1000 random small cases and the degenerate families on the sphere,
 against independent oracles.
 
-Run:  .venv/bin/python -m pytest tests/geometry/test_spherical_1000.py -q
+Run:  .venv/bin/python -m pytest tests/structures/test_spherical_1000.py -q
 
 Oracles (nothing shared with the library):
 

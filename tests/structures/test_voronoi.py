@@ -1,6 +1,6 @@
 """Tests for reference_impl.structures.voronoi.voronoi against exact, shapely and scipy oracles.
 
-Run:  .venv/bin/python -m pytest tests/geometry/test_voronoi.py -q
+Run:  .venv/bin/python -m pytest tests/structures/test_voronoi.py -q
 
 Oracles:
 * ``exact_cell``: the box clipped by the bisector half-planes of *all* other
