@@ -228,7 +228,10 @@ def test_hypothesis_grid_lonlat(raw, rnd):
     perm = list(range(len(ll)))
     rnd.shuffle(perm)
     sd2 = SphericalDelaunay([ll[i] for i in perm])
-    as_coords = lambda s: {frozenset(map(tuple, s.xyz[t].tolist())) for t in s.simplices}
+
+    def as_coords(s):
+        return {frozenset(map(tuple, s.xyz[t].tolist())) for t in s.simplices}
+
     assert as_coords(sd2) == as_coords(sd)
 
 

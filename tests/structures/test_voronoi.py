@@ -19,6 +19,7 @@ which is what storing a vertex as a double costs when the box is offset (1e9).
 from __future__ import annotations
 
 import doctest
+import importlib
 from fractions import Fraction
 
 import numpy as np
@@ -27,11 +28,11 @@ import shapely
 from hypothesis import given, strategies as st
 from scipy.spatial import Voronoi
 
-import importlib
-voronoi_module = importlib.import_module("reference_impl.structures.voronoi")
 from pointsets import degenerate_sets, flat_sets, nearly_collinear_hull
 from reference_impl.exact.verify import exact_coordinates
 from reference_impl.structures.voronoi import voronoi
+
+voronoi_module = importlib.import_module("reference_impl.structures.voronoi")
 
 F = Fraction
 
