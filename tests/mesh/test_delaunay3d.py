@@ -377,16 +377,14 @@ def exact(points) -> list[tuple[int, int, int]]:
 
 def orient_sign(a, b, c, d) -> int:
     """Sign of det(a - d, b - d, c - d): positive for a positively oriented tetrahedron."""
-    s = det3(*[(p[0] - d[0], p[1] - d[1], p[2] - d[2]) for p in (a, b, c)])
+    s = orient(a, b, c, d)
     return (s > 0) - (s < 0)
 
 
 def insphere_sign(a, b, c, d, e) -> int:
-    """+1 when e is strictly inside the sphere through the positively oriented a, b, c, d."""
-    rows = [(p[0] - e[0], p[1] - e[1], p[2] - e[2]) for p in (a, b, c, d)]
-    lift = [x * x + y * y + z * z for x, y, z in rows]
-    # 4x4 determinant expanded along the lift column; sign fixed by test_oracle_sanity
-    s = -sum((-1) ** i * lift[i] * det3(*(rows[j] for j in range(4) if j != i)) for i in range(4))
+    """+1 when e is strictly inside the sphere through the positively oriented a, b, c, d
+    (the sign convention is checked by test_oracle_sanity)."""
+    s = insphere(a, b, c, d, e)
     return (s > 0) - (s < 0)
 
 

@@ -708,8 +708,7 @@ GRID_ROOM = ([(x, 0) for x in range(7)] + [(6, y) for y in range(1, 5)]
              + [(x, 4) for x in range(5, -1, -1)] + [(0, y) for y in range(3, 0, -1)],
              [_square(1, 1), [(3, 1), (4, 1), (5, 1), (5, 2), (4, 2), (3, 2)], _square(2, 3 - 0.5, 1)[:2]
               + [(3, 3), (2.5, 3), (2, 3)]])
-SERPENT_WITH_HOLES = ([(0, 0), (10, 0), (10, 6), (2, 6), (2, 7), (10, 7), (10, 10), (0, 10), (0, 4), (8, 4), (8, 3), (0, 3)],
-           [_square(4, 1), _square(5, 8)])
+SERPENT_WITH_HOLES = (SERPENT, SERPENT_HOLES)   # SERPENT_HOLES: the squares at (4, 1) and (5, 8)
 PILLARS = ([(0, 0), (7, 0), (7, 7), (0, 7)],
            [_square(2 * i + 1, 2 * j + 1) for i in range(3) for j in range(3) if (i, j) != (1, 1)])
 L_ROOM = ([(0, 0), (2, 0), (4, 0), (4, 2), (2, 2), (2, 4), (0, 4), (0, 2)], [[(1, 1), (1, 2), (0.5, 1.5)]])
