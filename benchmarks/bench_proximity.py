@@ -67,7 +67,7 @@ def kdtree_closest(p):
 
 def scipy_gabriel(p):
     tri = scipy.spatial.Delaunay(p)
-    s, nb = tri.simplices, tri.neighbors
+    s = tri.simplices
     keep = []
     for k in range(3):
         u, v, r = s[:, (k + 1) % 3], s[:, (k + 2) % 3], s[:, k]

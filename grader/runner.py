@@ -515,7 +515,7 @@ class FunctionWorker:
                                   memory_mb=mem)
             if child.exit_status is None:
                 self.stop()
-                return RunOutcome("timeout", message=f"no answer within {wall_limit:g} s of wall time",
+                return RunOutcome("timeout", message=f"no answer within {wall_limit_for(time_limit):g} s of wall time",
                                   time_s=max(time_s, time_limit), memory_mb=mem)
             child.drain_after_exit()
             late = [r for r in child.replies if "violation" in r]

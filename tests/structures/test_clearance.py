@@ -1,6 +1,6 @@
 """Tests for reference_impl.structures.clearance.max_clearance against two independent oracles.
 
-Run:  .venv/bin/python -m pytest tests/geometry/test_clearance.py -q
+Run:  .venv/bin/python -m pytest tests/structures/test_clearance.py -q
 
 Oracles:
 * ``retraction_oracle``: the Voronoi-diagram retraction of O'Dunlaing and Yap,

@@ -8,7 +8,7 @@
   fresh ``Delaunay`` rebuilt for every query (its strict neighbours do not depend on how
   cocircular ties were broken, so they must match the incrementally updated ones).
 
-Run: python -m pytest tests/geometry/test_dynamic.py -q
+Run: python -m pytest tests/structures/test_dynamic.py -q
 """
 from __future__ import annotations
 

@@ -1,6 +1,6 @@
 """Tests of the teaching Bowyer-Watson's trace, dry run and input errors, and of the tutorial's bugs.
 
-    .venv/bin/python -m pytest tests/test_bowyer_watson_trace.py -q
+    .venv/bin/python -m pytest tests/teaching/test_bowyer_watson_trace.py -q
 
 Every trace record is checked against an oracle that shares no code with the
 module: exact integer predicates from ``reference_impl.exact.verify`` (and, for the

@@ -1,7 +1,7 @@
 """What only the fast ``Delaunay`` has: neighbours, hull, point location,
 incremental insertion, duplicate bookkeeping, large degenerate inputs, the JIT cache.
 
-Run: python -m pytest tests/test_delaunay_fast.py -q
+Run: python -m pytest tests/mesh/test_delaunay_fast.py -q
 """
 from __future__ import annotations
 
@@ -22,7 +22,7 @@ from reference_impl.exact.verify import (check_delaunay, convex_hull_exact, exac
                                    orient_exact)
 from exact_oracle import canon
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 
 
 @pytest.mark.parametrize("name,pts", pointsets.degenerate_sets(), ids=lambda v: v if isinstance(v, str) else "")

@@ -1,6 +1,6 @@
 """Exact 3D predicates against an independent oracle: exact integer determinants.
 
-Run: .venv/bin/python -m pytest tests/geometry/test_predicates3d.py -q
+Run: .venv/bin/python -m pytest tests/exact/test_predicates3d.py -q
 
 The oracle turns every double into an integer (mantissa shifted to a per-case
 common exponent, with numpy's frexp) and evaluates the determinants on numpy

@@ -1,6 +1,6 @@
 """Exact predicates against an independent oracle: Python Fractions.
 
-Run: python -m pytest tests/test_predicates.py -q
+Run: python -m pytest tests/exact/test_predicates.py -q
 """
 from __future__ import annotations
 

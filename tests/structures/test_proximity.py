@@ -1,6 +1,6 @@
 """Tests of reference_impl.structures.proximity: EMST, closest pair, Gabriel graph, relative neighbourhood graph.
 
-    .venv/bin/python -m pytest tests/geometry/test_proximity.py -q
+    .venv/bin/python -m pytest tests/structures/test_proximity.py -q
 
 Oracles share no code with the library: every distance comparison here is done
 on Python integers (all coordinates scaled by one power of two), brute force

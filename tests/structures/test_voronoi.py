@@ -1,6 +1,6 @@
 """Tests for reference_impl.structures.voronoi.voronoi against exact, shapely and scipy oracles.
 
-Run:  .venv/bin/python -m pytest tests/geometry/test_voronoi.py -q
+Run:  .venv/bin/python -m pytest tests/structures/test_voronoi.py -q
 
 Oracles:
 * ``exact_cell``: the box clipped by the bisector half-planes of *all* other
@@ -19,6 +19,7 @@ which is what storing a vertex as a double costs when the box is offset (1e9).
 from __future__ import annotations
 
 import doctest
+import importlib
 from fractions import Fraction
 
 import numpy as np
@@ -27,11 +28,11 @@ import shapely
 from hypothesis import given, strategies as st
 from scipy.spatial import Voronoi
 
-import importlib
-voronoi_module = importlib.import_module("reference_impl.structures.voronoi")
 from pointsets import degenerate_sets, flat_sets, nearly_collinear_hull
 from reference_impl.exact.verify import exact_coordinates
 from reference_impl.structures.voronoi import voronoi
+
+voronoi_module = importlib.import_module("reference_impl.structures.voronoi")
 
 F = Fraction
 

@@ -1,6 +1,6 @@
 """Tests for reference_impl.structures.hull.convex_hull against exact and library oracles.
 
-Run:  .venv/bin/python -m pytest tests/geometry/test_hull.py -q
+Run:  .venv/bin/python -m pytest tests/structures/test_hull.py -q
 
 Oracles: a brute-force O(n^3) hull in Python integers (supporting lines), the
 integer monotone chain ``verify.convex_hull_exact`` (for the order), and

@@ -1,6 +1,6 @@
 """Tests for reference_impl.structures.empty_circle.largest_empty_circle against an exact brute force.
 
-Run:  .venv/bin/python -m pytest tests/geometry/test_empty_circle.py -q
+Run:  .venv/bin/python -m pytest tests/structures/test_empty_circle.py -q
 
 Oracle (``brute_force_radius``): in exact integer arithmetic, every candidate
 centre of Toussaint's characterisation, enumerated blindly: the circumcentre of

@@ -2,7 +2,7 @@
 against an independent oracle: ``NavMesh.is_visible``, which walks segments through the
 constrained triangulation with the adaptive predicates (no code shared).
 
-Run: .venv/bin/python -m pytest tests/geometry/test_free_space.py -q
+Run: .venv/bin/python -m pytest tests/exact/test_free_space.py -q
 """
 from __future__ import annotations
 

@@ -7,7 +7,7 @@ the exact convex hull, and the tie-independent Delaunay graph (``strict`` neighb
 Also the bookkeeping: indices stay stable, removed points appear nowhere, the mesh
 stays dense (freed slots are reused), the vertex -> triangle map stays right.
 
-Run: python -m pytest tests/test_delaunay_remove.py -q
+Run: python -m pytest tests/mesh/test_delaunay_remove.py -q
 """
 from __future__ import annotations
 
