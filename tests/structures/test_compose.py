@@ -8,7 +8,7 @@ shaped like its input, the NamedTuple return values, and the problem adapters mo
 * the adjacency against ``scipy.spatial.Delaunay`` (general position: the same neighbour sets)
   and against brute force from the triangles on degenerate and flat sets.
 
-Run: python -m pytest tests/test_compose.py -q
+Run: python -m pytest tests/structures/test_compose.py -q
 """
 from __future__ import annotations
 

@@ -3,7 +3,7 @@
 The triangulations come from scipy's Delaunay (oriented counter-clockwise here) and from
 ``reference_impl.Delaunay``, on random points and on grids (many cocircular quadruples).
 
-Run: .venv/bin/python -m pytest tests/test_topology.py -q
+Run: .venv/bin/python -m pytest tests/mesh/test_topology.py -q
 """
 from __future__ import annotations
 
