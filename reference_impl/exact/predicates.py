@@ -42,8 +42,8 @@ import numba
 import numpy as np
 from numba import njit
 
-from reference_impl.exact.expansion import (EPSILON, accumulate, add, diff, mul, negate, sign,
-                                            sign_of, two_diff)
+from reference_impl.exact.expansion import (EPSILON, accumulate, add, certain_sign, diff, mul,
+                                            negate, sign, sign_of, two_diff)
 from reference_impl.exact.scaling import pow2_scale
 from reference_impl.exact.verify import exact_sign
 from reference_impl.validate import as_xy
@@ -66,7 +66,7 @@ WORKSPACE_SIZE = 8192
 # worst-case lengths: differences 2, squares and 2x2 products 8, lifts and
 # cofactors 16, lift*cofactor 512, sums of those up to 1536.
 _D = 0          # 12 slots: six 2-component differences
-_S1, _S2, _S3 = 16, 32, 48          # 16 each
+_S1, _S2 = 16, 32                   # 16 each
 _LIFT, _COF = 64, 96                # 32 each
 _T1, _T2 = 128, 640                 # 512 each: mul scratch
 _TERM = 1152                        # 512
@@ -120,20 +120,15 @@ def _orient_exact(ax, ay, bx, by, cx, cy, w):
 @njit(cache=True, inline="always")
 def orient2d_nb(ax, ay, bx, by, cx, cy, w):
     """Exact orientation sign of (a, b, c); ``w`` is a ``workspace()`` array."""
-    acx = ax - cx
-    bcx = bx - cx
-    acy = ay - cy
-    bcy = by - cy
+    acx, acy = ax - cx, ay - cy
+    bcx, bcy = bx - cx, by - cy
     detleft = acx * bcy
     detright = acy * bcx
     det = detleft - detright
     detsum = abs(detleft) + abs(detright)
-    if detsum > _O_LO and detsum < _O_HI:
-        errbound = CCW_ERRBOUND_A * detsum
-        if det > errbound:
-            return 1
-        if -det > errbound:
-            return -1
+    s = certain_sign(det, detsum, detsum, _O_HI, _O_LO, CCW_ERRBOUND_A, 0.0)
+    if s != 0:
+        return s
     return _orient_exact(ax, ay, bx, by, cx, cy, w)
 
 
@@ -167,6 +162,9 @@ def _incircle_exact(ax, ay, bx, by, cx, cy, dx, dy, w):
         dlen[j] = diff(v[j], v[6 + (j % 2)], w[_D + 2 * j:_D + 2 * j + 2])
     t1 = w[_T1:_T1 + 512]
     t2 = w[_T2:_T2 + 512]
+    s1 = w[_S1:_S1 + 16]; s2 = w[_S2:_S2 + 16]
+    lift = w[_LIFT:_LIFT + 32]; cof = w[_COF:_COF + 32]
+    term = w[_TERM:_TERM + 512]
     acc = w[_ACC:_ACC + 1536]
     acc2 = w[_ACC2:_ACC2 + 1536]
     nacc = 0
@@ -180,8 +178,6 @@ def _incircle_exact(ax, ay, bx, by, cx, cy, dx, dy, w):
         jy = w[_D + 4 * j + 2:_D + 4 * j + 4]; njy = int(dlen[2 * j + 1])
         kx = w[_D + 4 * kk:_D + 4 * kk + 2]; nkx = int(dlen[2 * kk])
         ky = w[_D + 4 * kk + 2:_D + 4 * kk + 4]; nky = int(dlen[2 * kk + 1])
-        s1 = w[_S1:_S1 + 16]; s2 = w[_S2:_S2 + 16]; s3 = w[_S3:_S3 + 16]
-        lift = w[_LIFT:_LIFT + 32]; cof = w[_COF:_COF + 32]
         # lift = ix^2 + iy^2
         n1 = mul(ix, nix, ix, nix, s1, t1, t2)
         n2 = mul(iy, niy, iy, niy, s2, t1, t2)
@@ -191,7 +187,6 @@ def _incircle_exact(ax, ay, bx, by, cx, cy, dx, dy, w):
         n2 = mul(kx, nkx, jy, njy, s2, t1, t2)
         negate(s2, n2)
         nc = add(s1, n1, s2, n2, cof)
-        term = w[_TERM:_TERM + 512]
         nt = mul(lift, nl, cof, nc, term, t1, t2)
         nacc = accumulate(acc, nacc, term, nt, acc2, False)
     return sign_of(acc, nacc)
@@ -200,12 +195,9 @@ def _incircle_exact(ax, ay, bx, by, cx, cy, dx, dy, w):
 @njit(cache=True, inline="always")
 def incircle_nb(ax, ay, bx, by, cx, cy, dx, dy, w):
     """Exact sign of d relative to the circle through CCW a, b, c (+1 inside)."""
-    adx = ax - dx
-    bdx = bx - dx
-    cdx = cx - dx
-    ady = ay - dy
-    bdy = by - dy
-    cdy = cy - dy
+    adx, ady = ax - dx, ay - dy
+    bdx, bdy = bx - dx, by - dy
+    cdx, cdy = cx - dx, cy - dy
     bdxcdy = bdx * cdy
     cdxbdy = cdx * bdy
     alift = adx * adx + ady * ady
@@ -219,12 +211,9 @@ def incircle_nb(ax, ay, bx, by, cx, cy, dx, dy, w):
     permanent = ((abs(bdxcdy) + abs(cdxbdy)) * alift + (abs(cdxady) + abs(adxcdy)) * blift
                  + (abs(adxbdy) + abs(bdxady)) * clift)
     dmax = max(abs(adx), abs(ady), abs(bdx), abs(bdy), abs(cdx), abs(cdy))
-    if dmax < _I_DMAX and permanent > _I_LO:
-        errbound = ICC_ERRBOUND_A * permanent
-        if det > errbound:
-            return 1
-        if -det > errbound:
-            return -1
+    s = certain_sign(det, permanent, dmax, _I_DMAX, _I_LO, ICC_ERRBOUND_A, 0.0)
+    if s != 0:
+        return s
     return _incircle_exact(ax, ay, bx, by, cx, cy, dx, dy, w)
 
 

@@ -89,18 +89,7 @@ def workspace3d() -> np.ndarray:
 @njit(cache=True)
 def orient3d_nb(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz, w):
     """Exact orient3d sign (see the module docstring); ``w`` is a ``workspace3d()`` array."""
-    adx = ax - dx
-    bdx = bx - dx
-    cdx = cx - dx
-    ady = ay - dy
-    bdy = by - dy
-    cdy = cy - dy
-    adz = az - dz
-    bdz = bz - dz
-    cdz = cz - dz
-    det, permanent = orient3d_det_perm(adx, ady, adz, bdx, bdy, bdz, cdx, cdy, cdz)
-    dmax = max(abs(adx), abs(bdx), abs(cdx), abs(ady), abs(bdy), abs(cdy),
-               abs(adz), abs(bdz), abs(cdz))
+    det, permanent, dmax = orient3d_det_perm(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz)
     s = certain_sign(det, permanent, dmax, _O_DMAX, _O_PLO, O3D_ERRBOUND_A, _O_ABS)
     if s != 0:
         return s
@@ -110,21 +99,8 @@ def orient3d_nb(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz, w):
 @njit(cache=True)
 def insphere_nb(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz, ex, ey, ez, w):
     """Exact insphere sign (see the module docstring); ``w`` is a ``workspace3d()`` array."""
-    aex = ax - ex
-    bex = bx - ex
-    cex = cx - ex
-    dex = dx - ex
-    aey = ay - ey
-    bey = by - ey
-    cey = cy - ey
-    dey = dy - ey
-    aez = az - ez
-    bez = bz - ez
-    cez = cz - ez
-    dez = dz - ez
-    det, permanent = insphere_det_perm(aex, aey, aez, bex, bey, bez, cex, cey, cez, dex, dey, dez)
-    dmax = max(abs(aex), abs(bex), abs(cex), abs(dex), abs(aey), abs(bey), abs(cey), abs(dey),
-               abs(aez), abs(bez), abs(cez), abs(dez))
+    det, permanent, dmax = insphere_det_perm(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz,
+                                             ex, ey, ez)
     s = certain_sign(det, permanent, dmax, _I_DMAX, _I_PLO, ISP_ERRBOUND_A, _I_ABS)
     if s != 0:
         return s

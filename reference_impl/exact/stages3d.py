@@ -82,41 +82,57 @@ WORKSPACE3D_SIZE = 103408
 
 # --------------------------------------------------------------------- floating-point formulas
 @njit(cache=True)
-def orient3d_det_perm(adx, ady, adz, bdx, bdy, bdz, cdx, cdy, cdz):
-    """orient3d's determinant from the differences, and its permanent (both in floating point)."""
-    bdxcdy = bdx * cdy
-    cdxbdy = cdx * bdy
-    cdxady = cdx * ady
-    adxcdy = adx * cdy
-    adxbdy = adx * bdy
-    bdxady = bdx * ady
-    det = adz * (bdxcdy - cdxbdy) + bdz * (cdxady - adxcdy) + cdz * (adxbdy - bdxady)
-    perm = ((abs(bdxcdy) + abs(cdxbdy)) * abs(adz) + (abs(cdxady) + abs(adxcdy)) * abs(bdz)
-            + (abs(adxbdy) + abs(bdxady)) * abs(cdz))
+def _minus(px, py, pz, qx, qy, qz):
+    """p - q in floating point."""
+    return px - qx, py - qy, pz - qz
+
+
+@njit(cache=True)
+def _minor(x1, y1, x2, y2):
+    """x1*y2 - x2*y1 in floating point, and its permanent |x1*y2| + |x2*y1|."""
+    p = x1 * y2
+    q = x2 * y1
+    return p - q, abs(p) + abs(q)
+
+
+@njit(cache=True)
+def _det3(adx, ady, adz, bdx, bdy, bdz, cdx, cdy, cdz):
+    """The 3x3 determinant of the rows a, b, c and its permanent, in floating point."""
+    bc, bc_p = _minor(bdx, bdy, cdx, cdy)
+    ca, ca_p = _minor(cdx, cdy, adx, ady)
+    ab, ab_p = _minor(adx, ady, bdx, bdy)
+    det = adz * bc + bdz * ca + cdz * ab
+    perm = bc_p * abs(adz) + ca_p * abs(bdz) + ab_p * abs(cdz)
     return det, perm
 
 
 @njit(cache=True)
-def insphere_det_perm(aex, aey, aez, bex, bey, bez, cex, cey, cez, dex, dey, dez):
-    """insphere's determinant from the differences, and its permanent (Shewchuk's formulas)."""
-    aexbey = aex * bey
-    bexaey = bex * aey
-    bexcey = bex * cey
-    cexbey = cex * bey
-    cexdey = cex * dey
-    dexcey = dex * cey
-    dexaey = dex * aey
-    aexdey = aex * dey
-    aexcey = aex * cey
-    cexaey = cex * aey
-    bexdey = bex * dey
-    dexbey = dex * bey
-    ab = aexbey - bexaey
-    bc = bexcey - cexbey
-    cd = cexdey - dexcey
-    da = dexaey - aexdey
-    ac = aexcey - cexaey
-    bd = bexdey - dexbey
+def orient3d_det_perm(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz):
+    """orient3d's determinant, its permanent and the largest |difference| (all in floating
+    point), from the four points (pass d = 0 for differences already taken)."""
+    adx, ady, adz = _minus(ax, ay, az, dx, dy, dz)
+    bdx, bdy, bdz = _minus(bx, by, bz, dx, dy, dz)
+    cdx, cdy, cdz = _minus(cx, cy, cz, dx, dy, dz)
+    det, perm = _det3(adx, ady, adz, bdx, bdy, bdz, cdx, cdy, cdz)
+    dmax = max(abs(adx), abs(bdx), abs(cdx), abs(ady), abs(bdy), abs(cdy),
+               abs(adz), abs(bdz), abs(cdz))
+    return det, perm, dmax
+
+
+@njit(cache=True)
+def insphere_det_perm(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz, ex, ey, ez):
+    """insphere's determinant, its permanent and the largest |difference| (Shewchuk's
+    formulas, in floating point) from the five points (e = 0 for differences already taken)."""
+    aex, aey, aez = _minus(ax, ay, az, ex, ey, ez)
+    bex, bey, bez = _minus(bx, by, bz, ex, ey, ez)
+    cex, cey, cez = _minus(cx, cy, cz, ex, ey, ez)
+    dex, dey, dez = _minus(dx, dy, dz, ex, ey, ez)
+    ab, ab_p = _minor(aex, aey, bex, bey)
+    bc, bc_p = _minor(bex, bey, cex, cey)
+    cd, cd_p = _minor(cex, cey, dex, dey)
+    da, da_p = _minor(dex, dey, aex, aey)
+    ac, ac_p = _minor(aex, aey, cex, cey)
+    bd, bd_p = _minor(bex, bey, dex, dey)
     abc = aez * bc - bez * ac + cez * ab
     bcd = bez * cd - cez * bd + dez * bc
     cda = cez * da + dez * ac + aez * cd
@@ -126,16 +142,12 @@ def insphere_det_perm(aex, aey, aez, bex, bey, bez, cex, cey, cez, dex, dey, dez
     clift = cex * cex + cey * cey + cez * cez
     dlift = dex * dex + dey * dey + dez * dez
     det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd)
-    az, bz, cz, dz = abs(aez), abs(bez), abs(cez), abs(dez)
-    ab_p = abs(aexbey) + abs(bexaey)
-    bc_p = abs(bexcey) + abs(cexbey)
-    cd_p = abs(cexdey) + abs(dexcey)
-    da_p = abs(dexaey) + abs(aexdey)
-    ac_p = abs(aexcey) + abs(cexaey)
-    bd_p = abs(bexdey) + abs(dexbey)
-    perm = ((cd_p * bz + bd_p * cz + bc_p * dz) * alift + (da_p * cz + ac_p * dz + cd_p * az) * blift
-            + (ab_p * dz + bd_p * az + da_p * bz) * clift + (bc_p * az + ac_p * bz + ab_p * cz) * dlift)
-    return det, perm
+    az_, bz_, cz_, dz_ = abs(aez), abs(bez), abs(cez), abs(dez)
+    perm = ((cd_p * bz_ + bd_p * cz_ + bc_p * dz_) * alift + (da_p * cz_ + ac_p * dz_ + cd_p * az_) * blift
+            + (ab_p * dz_ + bd_p * az_ + da_p * bz_) * clift + (bc_p * az_ + ac_p * bz_ + ab_p * cz_) * dlift)
+    dmax = max(abs(aex), abs(bex), abs(cex), abs(dex), abs(aey), abs(bey), abs(cey), abs(dey),
+               abs(aez), abs(bez), abs(cez), abs(dez))
+    return det, perm, dmax
 
 
 # --------------------------------------------------------------------- exact stages
@@ -388,9 +400,12 @@ def _det_perm(t, nrows):
     """The float determinant and permanent of orient3d (nrows 3) or insphere (4) from the
     differences t."""
     if nrows == 3:
-        return orient3d_det_perm(t[0], t[1], t[2], t[3], t[4], t[5], t[6], t[7], t[8])
-    return insphere_det_perm(t[0], t[1], t[2], t[3], t[4], t[5], t[6], t[7], t[8],
-                             t[9], t[10], t[11])
+        det, perm, _ = orient3d_det_perm(t[0], t[1], t[2], t[3], t[4], t[5], t[6], t[7], t[8],
+                                         0.0, 0.0, 0.0)
+    else:
+        det, perm, _ = insphere_det_perm(t[0], t[1], t[2], t[3], t[4], t[5], t[6], t[7], t[8],
+                                         t[9], t[10], t[11], 0.0, 0.0, 0.0)
+    return det, perm
 
 
 @njit(cache=True)

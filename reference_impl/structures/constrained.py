@@ -367,11 +367,6 @@ def insert_segments(tri, nbr, cid, vt, X, Y, seg, through, err, w):
 
 
 # ----------------------------------------------------------------------------- python API
-def _as_segments(segments, n: int) -> np.ndarray:
-    """Validate segments: an (k, 2) array of integer point indices in 0..n-1."""
-    return as_index_rows(segments, n, 2, "segments")
-
-
 class _Kernel(NamedTuple):
     tri: np.ndarray
     nbr: np.ndarray
@@ -441,7 +436,7 @@ class ConstrainedDelaunay:
 
     def __init__(self, points: ArrayLike, segments: ArrayLike = ()) -> None:
         self._delaunay = Delaunay(points)
-        self._segments = _as_segments(segments, len(self._delaunay.points))
+        self._segments = as_index_rows(segments, len(self._delaunay.points), 2, "segments")
         k = _run_cdt(self._delaunay, self._segments)
         if k.error is not None:
             s, o = k.error[:2]

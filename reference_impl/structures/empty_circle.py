@@ -59,7 +59,8 @@ from reference_impl.exact.expansion import EPSILON
 from reference_impl.structures.hull import convex_hull
 from reference_impl.validate import as_points
 from reference_impl.exact.predicates import orient2d_nb, workspace
-from reference_impl.structures.voronoi import _pow2_exponent, circumcentres, delaunay_adjacency
+from reference_impl.exact.scaling import pow2_exponent
+from reference_impl.structures.voronoi import circumcentres, delaunay_adjacency
 
 __all__ = ["largest_empty_circle"]
 
@@ -254,7 +255,7 @@ def largest_empty_circle(points: ArrayLike) -> tuple[float, float, float]:
     if len(pts) == 0:
         raise ValueError("points is empty: the largest empty circle needs at least one point")
     d = Delaunay(pts)
-    k = _pow2_exponent(pts)
+    k = pow2_exponent(pts)
     X = np.ldexp(pts[:, 0], -k)
     Y = np.ldexp(pts[:, 1], -k)
     simp = d.simplices
