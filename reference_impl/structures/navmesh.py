@@ -68,7 +68,7 @@ from numpy.typing import ArrayLike
 
 from reference_impl.structures.constrained import _ahead, _fmt, _run_cdt, _slot, _third, fan_search, orient_many
 from reference_impl.mesh.delaunay import Delaunay
-from reference_impl.validate import as_point, as_points, as_ring
+from reference_impl.validate import as_point, as_ring
 from reference_impl.exact.predicates import orient2d, orient2d_nb, workspace
 
 __all__ = ["NavMesh", "shortest_path", "funnel", "PolygonTriangulation", "polygon_triangulation"]
