@@ -120,42 +120,48 @@ def _sign_if_exact(v, d):
 
 
 @njit(cache=True)
-def _products_sign(v, w):
-    """Exact sign of the expression of ``_products_python`` for the 16 doubles v (overwritten)."""
+def _products_slow(v, w):
+    """The exact sign of the expression of ``_products_python`` for the 16 doubles v
+    (overwritten) once the filter has failed: error-free floats, else expansions."""
     d = w[_DIFFS:_DIFFS + 8]
-    dmax = 0.0
     for i in range(8):
         d[i] = v[2 * i] - v[2 * i + 1]
-        dmax = max(dmax, abs(d[i]))
-    p0, p1, p2, p3 = d[0] * d[1], d[2] * d[3], d[4] * d[5], d[6] * d[7]
-    det = (p0 + p1) - (p2 + p3)
-    perm = (abs(p0) + abs(p1)) + (abs(p2) + abs(p3))
-    s = certain_sign(det, perm, dmax, _F_DMAX, _F_LO, _BOUND, 0.0)
-    if s == 0:
-        s = _sign_if_exact(v, d)
+    s = _sign_if_exact(v, d)
     return s if s != 2 else _products_exact(v, w)
+
+
+@njit(cache=True, inline="always")
+def _dots_sign(ax, ay, bx, by, cx, cy, dx, dy, ex, ey, fx, fy, gx, gy, hx, hy, w):
+    """Exact sign of (a - b).(c - d) - (e - f).(g - h): the float filter, then ``_products_slow``."""
+    x1, y1 = ax - bx, ay - by
+    x2, y2 = cx - dx, cy - dy
+    x3, y3 = ex - fx, ey - fy
+    x4, y4 = gx - hx, gy - hy
+    p1, p2, p3, p4 = x1 * x2, y1 * y2, x3 * x4, y3 * y4
+    det = (p1 + p2) - (p3 + p4)
+    perm = (abs(p1) + abs(p2)) + (abs(p3) + abs(p4))
+    dmax = max(abs(x1), abs(y1), abs(x2), abs(y2), abs(x3), abs(y3), abs(x4), abs(y4))
+    s = certain_sign(det, perm, dmax, _F_DMAX, _F_LO, _BOUND, 0.0)
+    if s != 0:
+        return s
+    v = w[_VALUES:]
+    v[0] = ax; v[1] = bx; v[2] = cx; v[3] = dx
+    v[4] = ay; v[5] = by; v[6] = cy; v[7] = dy
+    v[8] = ex; v[9] = fx; v[10] = gx; v[11] = hx
+    v[12] = ey; v[13] = fy; v[14] = gy; v[15] = hy
+    return _products_slow(v, w)
 
 
 @njit(cache=True)
 def sq_dist_cmp(ax, ay, bx, by, cx, cy, dx, dy, w):
     """Exact sign of |a - b|^2 - |c - d|^2 (``w`` is scratch from ``scratch()``)."""
-    v = w[_VALUES:]
-    v[0] = ax; v[1] = bx; v[2] = ax; v[3] = bx
-    v[4] = ay; v[5] = by; v[6] = ay; v[7] = by
-    v[8] = cx; v[9] = dx; v[10] = cx; v[11] = dx
-    v[12] = cy; v[13] = dy; v[14] = cy; v[15] = dy
-    return _products_sign(v, w)
+    return _dots_sign(ax, ay, bx, by, ax, ay, bx, by, cx, cy, dx, dy, cx, cy, dx, dy, w)
 
 
 @njit(cache=True)
 def dot_sign(px, py, qx, qy, rx, ry, w):
     """Exact sign of (p - r) . (q - r): negative iff r is strictly inside the circle on diameter pq."""
-    v = w[_VALUES:]
-    v[0] = px; v[1] = rx; v[2] = qx; v[3] = rx
-    v[4] = py; v[5] = ry; v[6] = qy; v[7] = ry
-    for i in range(8, 16):
-        v[i] = 0.0
-    return _products_sign(v, w)
+    return _dots_sign(px, py, rx, ry, qx, qy, rx, ry, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, w)
 
 
 # ----------------------------------------------------------------------------- exact length order
