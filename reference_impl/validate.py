@@ -26,6 +26,7 @@ import numbers
 from typing import Sequence
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 __all__ = ["as_points", "as_point", "as_xy", "as_xyz", "as_point_rows", "as_index_rows", "as_bbox",
            "as_ring"]
@@ -74,7 +75,7 @@ def as_point(p, name: str = "point", dim: int = 2) -> np.ndarray:
     return as_points([p] if np.ndim(p) == 1 else p, name=name, dim=dim).reshape(dim)
 
 
-def as_xy(p, name: str = "point") -> tuple[float, float]:
+def as_xy(p: ArrayLike, name: str = "point") -> tuple[float, float]:
     """One 2D point as a pair of finite floats (``-0.0`` kept: the predicates do not care).
 
     >>> as_xy((1, 2))
@@ -94,7 +95,7 @@ def as_xy(p, name: str = "point") -> tuple[float, float]:
     return x, y
 
 
-def as_xyz(p, name: str = "point") -> tuple[float, float, float]:
+def as_xyz(p: ArrayLike, name: str = "point") -> tuple[float, float, float]:
     """One 3D point as a triple of finite floats.
 
     >>> as_xyz((1, 2, 3))
@@ -160,7 +161,7 @@ def as_index_rows(rows, n: int, width: int, name: str, allow_integral_floats: bo
     return idx
 
 
-def as_bbox(bbox) -> np.ndarray:
+def as_bbox(bbox: ArrayLike) -> np.ndarray:
     """Validate a box ``(xmin, ymin, xmax, ymax)`` and return it as a float64 array.
 
     >>> as_bbox((0, 0, 2, 1)).tolist()
@@ -185,7 +186,7 @@ def as_bbox(bbox) -> np.ndarray:
     return box + 0.0
 
 
-def as_ring(ring, name: str) -> np.ndarray:
+def as_ring(ring: ArrayLike, name: str) -> np.ndarray:
     """Validated (k, 2) polygon ring without repeated consecutive vertices or a closing copy
     of the first; at least 3 vertices.
 

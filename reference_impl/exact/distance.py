@@ -20,7 +20,8 @@ and sorts only the runs of overlapping intervals again, exactly.  No epsilon.
 0
 >>> dot_sign(0.0, 0.0, 2.0, 0.0, 1.0, 0.5, w)                  # (1, 0.5) inside the circle on 0-2
 -1
->>> length_order(np.array([[0.0, 0.0], [3.0, 0.0], [0.0, 1.0]]), np.array([0, 0, 1]), np.array([1, 2, 2])).tolist()
+>>> P = np.array([[0.0, 0.0], [3.0, 0.0], [0.0, 1.0]])
+>>> length_order(P, np.array([0, 0, 1]), np.array([1, 2, 2])).tolist()     # lengths 3, 1, sqrt(10)
 [1, 0, 2]
 """
 from __future__ import annotations

@@ -48,7 +48,8 @@ from numba import njit
 from reference_impl.exact.expansion import (EPSILON, accumulate, add, compress, diff, mul, negate,
                                             sign, sign_of, two_diff)
 from reference_impl.exact.scaling import pow2_scale
-from reference_impl.exact.verify import exact_coordinates_3d, exact_sign, insphere_exact, orient3d_exact  # noqa: F401 (re-exported)
+from reference_impl.exact.verify import (exact_coordinates_3d, exact_sign, insphere_exact,  # noqa: F401 (re-exported)
+                                         orient3d_exact)
 
 O3D_ERRBOUND_B = (3.0 + 28.0 * EPSILON) * EPSILON
 O3D_ERRBOUND_C = 64.0 * EPSILON * EPSILON

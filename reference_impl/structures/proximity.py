@@ -36,7 +36,8 @@ import numpy as np
 from numba import njit
 
 from reference_impl.mesh.delaunay import Delaunay
-from reference_impl.exact.distance import dot_sign, length_order, scratch, sq_dist_cmp  # noqa: F401 (sq_dist_cmp, dot_sign re-exported)
+# sq_dist_cmp and dot_sign stay importable from here too
+from reference_impl.exact.distance import dot_sign, length_order, scratch, sq_dist_cmp
 from reference_impl.validate import as_points
 
 __all__ = ["euclidean_mst", "closest_pair", "gabriel_graph", "relative_neighborhood_graph"]
