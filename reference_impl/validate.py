@@ -1,8 +1,16 @@
-"""Input validation shared by every public function: turn user input into an (n, d) float64 array.
+"""Input validation shared by every public function: turn user input into float64 (or index) arrays.
 
 Bad input raises ``ValueError`` with a message that names the problem (NaN,
 infinity, wrong shape, text).  Negative zero is normalised to +0.0 so that
 equal points are bit-for-bit equal.
+
+- ``as_points`` / ``as_point``: (n, d) point arrays and single points;
+- ``as_xy`` / ``as_xyz``: one point as a tuple of floats (the Python predicates);
+- ``as_point_rows``: several (k, d) arrays with the same k (batch predicates);
+- ``as_index_rows``: rows of point indices (triangles, segments, flips);
+- ``as_bbox``: a box (xmin, ymin, xmax, ymax);  ``as_ring``: a polygon ring.
+
+(``exact/verify.py`` and ``exact/free_space.py`` keep their own checks: they are stdlib only.)
 
 >>> as_points([(0, 0), (1, 2)]).tolist()
 [[0.0, 0.0], [1.0, 2.0]]
@@ -13,11 +21,15 @@ ValueError: points[0] = [0.0, nan] is not finite (NaN or infinity)
 """
 from __future__ import annotations
 
+import math
 import numbers
+from typing import Sequence
 
 import numpy as np
+from numpy.typing import ArrayLike
 
-__all__ = ["as_points", "as_point", "as_queries", "as_index_rows"]
+__all__ = ["as_points", "as_point", "as_queries", "as_xy", "as_xyz", "as_point_rows", "as_index_rows", "as_bbox",
+           "as_ring"]
 
 
 def as_points(points, name: str = "points", dim: int = 2) -> np.ndarray:
@@ -83,6 +95,53 @@ def as_queries(p, dim: int) -> tuple[np.ndarray, tuple[int, ...]]:
     return qs, (len(qs),)
 
 
+def as_xy(p: ArrayLike, name: str = "point") -> tuple[float, float]:
+    """One 2D point as a pair of finite floats (``-0.0`` kept: the predicates do not care).
+
+    >>> as_xy((1, 2))
+    (1.0, 2.0)
+    >>> as_xy("ab", "a")
+    Traceback (most recent call last):
+    ...
+    ValueError: a must be a pair of numbers, got 'ab'
+    """
+    try:
+        x, y = p
+        x, y = float(x), float(y)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} must be a pair of numbers, got {p!r}") from None
+    if not (math.isfinite(x) and math.isfinite(y)):
+        raise ValueError(f"{name} = {p!r} is not finite (NaN or infinity)")
+    return x, y
+
+
+def as_xyz(p: ArrayLike, name: str = "point") -> tuple[float, float, float]:
+    """One 3D point as a triple of finite floats.
+
+    >>> as_xyz((1, 2, 3))
+    (1.0, 2.0, 3.0)
+    """
+    if isinstance(p, (str, bytes)) or np.ndim(p) != 1:
+        raise ValueError(f"{name} must be three numbers, got {p!r}")
+    q = as_points([p], name=name, dim=3)[0]
+    return float(q[0]), float(q[1]), float(q[2])
+
+
+def as_point_rows(arrays: Sequence, names: Sequence[str], dim: int = 3) -> list[np.ndarray]:
+    """Validate several (k, dim) arrays (a single point counts as k = 1) with the same k.
+
+    >>> [a.tolist() for a in as_point_rows(([0, 0, 1], [[1, 2, 3]]), ("a", "b"))]
+    [[[0.0, 0.0, 1.0]], [[1.0, 2.0, 3.0]]]
+    """
+    out = [as_points(np.atleast_2d(x) if np.ndim(x) == 1 else x, name=nm, dim=dim)
+           for x, nm in zip(arrays, names)]
+    k = len(out[0])
+    for x, nm in zip(out, names):
+        if len(x) != k:
+            raise ValueError(f"{nm} has {len(x)} points but {names[0]} has {k}")
+    return out
+
+
 def as_index_rows(rows, n: int, width: int, name: str, allow_integral_floats: bool = False) -> np.ndarray:
     """Validate rows of point indices (triangles, segments, flips): an (m, width) int64 array.
 
@@ -120,3 +179,47 @@ def as_index_rows(rows, n: int, width: int, name: str, allow_integral_floats: bo
     if len(bad):
         raise ValueError(f"{name}[{bad[0]}] = {idx[bad[0]].tolist()} has an index outside 0..{n - 1}")
     return idx
+
+
+def as_bbox(bbox: ArrayLike) -> np.ndarray:
+    """Validate a box ``(xmin, ymin, xmax, ymax)`` and return it as a float64 array.
+
+    >>> as_bbox((0, 0, 2, 1)).tolist()
+    [0.0, 0.0, 2.0, 1.0]
+    >>> as_bbox((0, 0, 0, 1))
+    Traceback (most recent call last):
+    ...
+    ValueError: bbox must have xmin < xmax and ymin < ymax, got (0.0, 0.0, 0.0, 1.0)
+    """
+    if isinstance(bbox, (str, bytes)):
+        raise ValueError(f"bbox must be 4 numbers (xmin, ymin, xmax, ymax), got text {bbox!r}")
+    try:
+        box = np.asarray(bbox, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise ValueError(f"bbox must be 4 numbers (xmin, ymin, xmax, ymax), got {bbox!r}") from None
+    if box.shape != (4,):
+        raise ValueError(f"bbox must be 4 numbers (xmin, ymin, xmax, ymax), got shape {box.shape}")
+    if not np.isfinite(box).all():
+        raise ValueError(f"bbox must be finite, got {tuple(box.tolist())}")
+    if not (box[0] < box[2] and box[1] < box[3]):
+        raise ValueError(f"bbox must have xmin < xmax and ymin < ymax, got {tuple(box.tolist())}")
+    return box + 0.0
+
+
+def as_ring(ring: ArrayLike, name: str) -> np.ndarray:
+    """Validated (k, 2) polygon ring without repeated consecutive vertices or a closing copy
+    of the first; at least 3 vertices.
+
+    >>> as_ring([(0, 0), (1, 0), (1, 0), (0, 1), (0, 0)], "boundary").tolist()
+    [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]
+    """
+    pts = as_points(ring, name=name)
+    if len(pts):
+        keep = np.ones(len(pts), dtype=bool)
+        keep[1:] = (pts[1:] != pts[:-1]).any(axis=1)
+        pts = pts[keep]
+        if len(pts) > 1 and (pts[0] == pts[-1]).all():
+            pts = pts[:-1]
+    if len(pts) < 3:
+        raise ValueError(f"{name} needs at least 3 distinct vertices, got {len(pts)}")
+    return pts

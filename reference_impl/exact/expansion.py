@@ -24,8 +24,8 @@ Example (run ``python -m doctest reference_impl/exact/expansion.py``):
 >>> two_sum(1.0, 1e-30)
 (1.0, 1e-30)
 >>> n = add(np.array([1e-30, 1.0]), 2, np.array([-1.0]), 1, h)
->>> h[:n].tolist()
-[1e-30]
+>>> h[:n].tolist(), sign_of(h, n)
+([1e-30], 1)
 """
 from __future__ import annotations
 
@@ -35,7 +35,7 @@ SPLITTER = 134217729.0  # 2**27 + 1, splits a double into two 26-bit halves
 EPSILON = 2.0 ** -53     # half an ulp of 1.0 (round-to-nearest unit roundoff)
 
 __all__ = ["SPLITTER", "EPSILON", "two_sum", "two_diff", "two_product", "diff", "add",
-           "scale", "mul", "negate"]
+           "scale", "mul", "negate", "compress", "accumulate", "sign", "sign_of", "certain_sign"]
 
 
 @njit(cache=True)
@@ -77,6 +77,24 @@ def two_product(a, b):
 
 
 @njit(cache=True)
+def _keep(h, hi, x):
+    """Append the component x at h[hi] unless it is zero; return the new length."""
+    if x != 0.0:
+        h[hi] = x
+        return hi + 1
+    return hi
+
+
+@njit(cache=True)
+def _close(h, hi, q):
+    """Append the last (most significant) component q, kept even when zero if h is empty."""
+    if q != 0.0 or hi == 0:
+        h[hi] = q
+        hi += 1
+    return hi
+
+
+@njit(cache=True)
 def diff(a, b, h):
     """Write the exact difference a - b into h as an expansion; return its length."""
     x, y = two_diff(a, b)
@@ -111,39 +129,23 @@ def add(e, elen, f, flen, h):
             nxt = f[fi]
             fi += 1
         q, hh = two_sum(q, nxt)
-        if hh != 0.0:
-            h[hi] = hh
-            hi += 1
-    if q != 0.0 or hi == 0:
-        h[hi] = q
-        hi += 1
-    return hi
+        hi = _keep(h, hi, hh)
+    return _close(h, hi, q)
 
 
 @njit(cache=True)
 def scale(e, elen, b, h):
     """h = e * b exactly for a double b (scale_expansion_zeroelim); return len(h)."""
     q, hh = two_product(e[0], b)
-    hi = 0
-    if hh != 0.0:
-        h[hi] = hh
-        hi += 1
+    hi = _keep(h, 0, hh)
     for i in range(1, elen):
         p1, p0 = two_product(e[i], b)
         s, hh = two_sum(q, p0)
-        if hh != 0.0:
-            h[hi] = hh
-            hi += 1
+        hi = _keep(h, hi, hh)
         # p1 dominates s, so a fast two-sum is exact here
         q = p1 + s
-        hh = s - (q - p1)
-        if hh != 0.0:
-            h[hi] = hh
-            hi += 1
-    if q != 0.0 or hi == 0:
-        h[hi] = q
-        hi += 1
-    return hi
+        hi = _keep(h, hi, s - (q - p1))
+    return _close(h, hi, q)
 
 
 @njit(cache=True)
@@ -164,3 +166,74 @@ def negate(e, elen):
     """Negate an expansion in place."""
     for i in range(elen):
         e[i] = -e[i]
+
+
+@njit(cache=True)
+def compress(e, n):
+    """Shewchuk's compress, in place: the same value as a shorter expansion; returns its length."""
+    bottom = n - 1
+    q = e[bottom]
+    for i in range(n - 2, -1, -1):
+        enow = e[i]
+        qnew = q + enow
+        small = enow - (qnew - q)
+        if small != 0.0:
+            e[bottom] = qnew
+            bottom -= 1
+            q = small
+        else:
+            q = qnew
+    top = 0
+    for i in range(bottom + 1, n):
+        hnow = e[i]
+        qnew = hnow + q
+        small = q - (qnew - hnow)
+        if small != 0.0:
+            e[top] = small
+            top += 1
+        q = qnew
+    e[top] = q
+    return top + 1
+
+
+@njit(cache=True)
+def accumulate(acc, nacc, term, nt, scratch, squeeze):
+    """acc += term in place (``nacc == 0``: acc = term); ``scratch`` holds the sum first.
+
+    With ``squeeze`` the sum is compressed.  Returns the new length of acc.
+    """
+    if nacc == 0:
+        for q in range(nt):
+            acc[q] = term[q]
+        return nt
+    n = add(acc, nacc, term, nt, scratch)
+    if squeeze:
+        n = compress(scratch, n)
+    for q in range(n):
+        acc[q] = scratch[q]
+    return n
+
+
+@njit(cache=True)
+def sign(x):
+    """The sign of a double: 1, -1 or 0."""
+    return 1 if x > 0.0 else (-1 if x < 0.0 else 0)
+
+
+@njit(cache=True)
+def sign_of(e, n):
+    """The sign of the expansion e[:n]: the sign of its most significant component."""
+    return sign(e[n - 1])
+
+
+@njit(cache=True, inline="always")
+def certain_sign(det, perm, dmax, dmax_limit, perm_lo, bound, abs_bound):
+    """A floating-point filter: the sign of det when |det| exceeds ``bound * perm + abs_bound``
+    (trusted only where ``dmax < dmax_limit`` and ``perm > perm_lo``), else 0 (undecided)."""
+    if dmax < dmax_limit and perm > perm_lo:
+        errbound = bound * perm + abs_bound
+        if det > errbound:
+            return 1
+        if -det > errbound:
+            return -1
+    return 0

@@ -16,12 +16,13 @@ arithmetic and fast robust geometric predicates", 1997):
    almost every test is a tie), the plain determinant is computed without any
    rounding, so its sign is exact: ties stay cheap.
 3. Otherwise the determinant is recomputed exactly with expansion arithmetic
-   (``expansion.py``) after scaling all coordinates by one power of two (which
-   does not change the sign).  When the input differences are exact the
+   (``expansion.py``) after scaling all coordinates by one power of two
+   (``scaling.pow2_scale``, which does not change the sign).  When the input differences are exact the
    expansions stay one or two components long.
 4. If the coordinates of one call span more than 2**150 in magnitude (so that
    expansion components could underflow), the sign is computed with Python
-   integers instead (a numba ``objmode`` block).  This is the rare path.
+   integers instead (``verify.exact_sign`` in a numba ``objmode`` block).  This is the
+   rare path.
 
 ``*_nb`` functions take a scratch array from ``workspace()`` and are meant for
 numba-compiled callers; the plain functions accept pairs and are for Python.
@@ -41,7 +42,11 @@ import numba
 import numpy as np
 from numba import njit
 
-from reference_impl.exact.expansion import EPSILON, add, diff, mul, negate, two_diff
+from reference_impl.exact.expansion import (EPSILON, accumulate, add, certain_sign, diff, mul,
+                                            negate, sign, sign_of, two_diff)
+from reference_impl.exact.scaling import pow2_scale
+from reference_impl.exact.verify import exact_sign
+from reference_impl.validate import as_xy
 
 __all__ = ["orient2d", "incircle", "orient2d_nb", "incircle_nb", "workspace", "WORKSPACE_SIZE"]
 
@@ -61,7 +66,7 @@ WORKSPACE_SIZE = 8192
 # worst-case lengths: differences 2, squares and 2x2 products 8, lifts and
 # cofactors 16, lift*cofactor 512, sums of those up to 1536.
 _D = 0          # 12 slots: six 2-component differences
-_S1, _S2, _S3 = 16, 32, 48          # 16 each
+_S1, _S2 = 16, 32                   # 16 each
 _LIFT, _COF = 64, 96                # 32 each
 _T1, _T2 = 128, 640                 # 512 each: mul scratch
 _TERM = 1152                        # 512
@@ -73,37 +78,6 @@ _L = 4872                           # 6: lengths of the differences (stored as f
 def workspace() -> np.ndarray:
     """A scratch array for the ``*_nb`` predicates (one per thread of work)."""
     return np.empty(WORKSPACE_SIZE, dtype=np.float64)
-
-
-# --------------------------------------------------------------------- exact python fallback
-def _orient_python(ax, ay, bx, by, cx, cy) -> int:
-    from reference_impl.exact.verify import exact_coordinates, orient_exact
-    a, b, c = exact_coordinates([(ax, ay), (bx, by), (cx, cy)])
-    return orient_exact(a, b, c)
-
-
-def _incircle_python(ax, ay, bx, by, cx, cy, dx, dy) -> int:
-    from reference_impl.exact.verify import exact_coordinates, incircle_exact
-    a, b, c, d = exact_coordinates([(ax, ay), (bx, by), (cx, cy), (dx, dy)])
-    return incircle_exact(a, b, c, d)
-
-
-# --------------------------------------------------------------------- scaling
-@njit(cache=True)
-def _scale_exponent(v):
-    """Return k with max|v| * 2**k in [0.5, 1), and whether all non-zero |v| * 2**k >= 2**-150."""
-    m = 0.0
-    for x in v:
-        m = max(m, abs(x))
-    if m == 0.0:
-        return 0, True
-    _, e = math.frexp(m)
-    k = -e
-    lo = math.ldexp(_EXACT_MIN, -k)   # threshold in unscaled units
-    for x in v:
-        if x != 0.0 and abs(x) < lo:
-            return k, False
-    return k, True
 
 
 # --------------------------------------------------------------------- orient2d
@@ -124,17 +98,13 @@ def _orient_exact(ax, ay, bx, by, cx, cy, w):
     if (t1 == 0.0 and t2 == 0.0 and t3 == 0.0 and t4 == 0.0
             and _small_integer(acx, _O_INT) and _small_integer(bcy, _O_INT)
             and _small_integer(acy, _O_INT) and _small_integer(bcx, _O_INT)):
-        det = acx * bcy - acy * bcx
-        return 1 if det > 0.0 else (-1 if det < 0.0 else 0)
+        return sign(acx * bcy - acy * bcx)
     v = w[_V:_V + 6]
     v[0] = ax; v[1] = ay; v[2] = bx; v[3] = by; v[4] = cx; v[5] = cy
-    k, ok = _scale_exponent(v)
-    if not ok:
+    if not pow2_scale(v, _EXACT_MIN):      # magnitudes too far apart: Python integers
         with numba.objmode(s="int64"):
-            s = _orient_python(ax, ay, bx, by, cx, cy)
+            s = exact_sign(v, 2)
         return s
-    for i in range(6):
-        v[i] = math.ldexp(v[i], k)
     acx = w[0:2]; bcy = w[2:4]; acy = w[4:6]; bcx = w[6:8]
     n1 = diff(v[0], v[4], acx)
     n2 = diff(v[3], v[5], bcy)
@@ -144,28 +114,21 @@ def _orient_exact(ax, ay, bx, by, cx, cy, w):
     np_ = mul(acx, n1, bcy, n2, p, t1, t2)
     nq = mul(acy, n3, bcx, n4, q, t1, t2)
     negate(q, nq)
-    nh = add(p, np_, q, nq, h)
-    top = h[nh - 1]
-    return 1 if top > 0.0 else (-1 if top < 0.0 else 0)
+    return sign_of(h, add(p, np_, q, nq, h))
 
 
 @njit(cache=True, inline="always")
 def orient2d_nb(ax, ay, bx, by, cx, cy, w):
     """Exact orientation sign of (a, b, c); ``w`` is a ``workspace()`` array."""
-    acx = ax - cx
-    bcx = bx - cx
-    acy = ay - cy
-    bcy = by - cy
+    acx, acy = ax - cx, ay - cy
+    bcx, bcy = bx - cx, by - cy
     detleft = acx * bcy
     detright = acy * bcx
     det = detleft - detright
     detsum = abs(detleft) + abs(detright)
-    if detsum > _O_LO and detsum < _O_HI:
-        errbound = CCW_ERRBOUND_A * detsum
-        if det > errbound:
-            return 1
-        if -det > errbound:
-            return -1
+    s = certain_sign(det, detsum, detsum, _O_HI, _O_LO, CCW_ERRBOUND_A, 0.0)
+    if s != 0:
+        return s
     return _orient_exact(ax, ay, bx, by, cx, cy, w)
 
 
@@ -184,25 +147,24 @@ def _incircle_exact(ax, ay, bx, by, cx, cy, dx, dy, w):
             and _small_integer(adx, _I_INT) and _small_integer(ady, _I_INT)
             and _small_integer(bdx, _I_INT) and _small_integer(bdy, _I_INT)
             and _small_integer(cdx, _I_INT) and _small_integer(cdy, _I_INT)):
-        det = ((adx * adx + ady * ady) * (bdx * cdy - cdx * bdy)
-               + (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy)
-               + (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady))
-        return 1 if det > 0.0 else (-1 if det < 0.0 else 0)
+        return sign((adx * adx + ady * ady) * (bdx * cdy - cdx * bdy)
+                    + (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy)
+                    + (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady))
     v = w[_V:_V + 8]
     v[0] = ax; v[1] = ay; v[2] = bx; v[3] = by; v[4] = cx; v[5] = cy; v[6] = dx; v[7] = dy
-    k, ok = _scale_exponent(v)
-    if not ok:
+    if not pow2_scale(v, _EXACT_MIN):
         with numba.objmode(s="int64"):
-            s = _incircle_python(ax, ay, bx, by, cx, cy, dx, dy)
+            s = exact_sign(v, 2)
         return s
-    for i in range(8):
-        v[i] = math.ldexp(v[i], k)
     # differences p - d for p = a, b, c; slot j holds x (j even) or y (j odd) of point j // 2
     dlen = w[_L:_L + 6]
     for j in range(6):
         dlen[j] = diff(v[j], v[6 + (j % 2)], w[_D + 2 * j:_D + 2 * j + 2])
     t1 = w[_T1:_T1 + 512]
     t2 = w[_T2:_T2 + 512]
+    s1 = w[_S1:_S1 + 16]; s2 = w[_S2:_S2 + 16]
+    lift = w[_LIFT:_LIFT + 32]; cof = w[_COF:_COF + 32]
+    term = w[_TERM:_TERM + 512]
     acc = w[_ACC:_ACC + 1536]
     acc2 = w[_ACC2:_ACC2 + 1536]
     nacc = 0
@@ -216,8 +178,6 @@ def _incircle_exact(ax, ay, bx, by, cx, cy, dx, dy, w):
         jy = w[_D + 4 * j + 2:_D + 4 * j + 4]; njy = int(dlen[2 * j + 1])
         kx = w[_D + 4 * kk:_D + 4 * kk + 2]; nkx = int(dlen[2 * kk])
         ky = w[_D + 4 * kk + 2:_D + 4 * kk + 4]; nky = int(dlen[2 * kk + 1])
-        s1 = w[_S1:_S1 + 16]; s2 = w[_S2:_S2 + 16]; s3 = w[_S3:_S3 + 16]
-        lift = w[_LIFT:_LIFT + 32]; cof = w[_COF:_COF + 32]
         # lift = ix^2 + iy^2
         n1 = mul(ix, nix, ix, nix, s1, t1, t2)
         n2 = mul(iy, niy, iy, niy, s2, t1, t2)
@@ -227,30 +187,17 @@ def _incircle_exact(ax, ay, bx, by, cx, cy, dx, dy, w):
         n2 = mul(kx, nkx, jy, njy, s2, t1, t2)
         negate(s2, n2)
         nc = add(s1, n1, s2, n2, cof)
-        term = w[_TERM:_TERM + 512]
         nt = mul(lift, nl, cof, nc, term, t1, t2)
-        if nacc == 0:
-            for q in range(nt):
-                acc[q] = term[q]
-            nacc = nt
-        else:
-            m = add(acc, nacc, term, nt, acc2)
-            for q in range(m):
-                acc[q] = acc2[q]
-            nacc = m
-    top = acc[nacc - 1]
-    return 1 if top > 0.0 else (-1 if top < 0.0 else 0)
+        nacc = accumulate(acc, nacc, term, nt, acc2, False)
+    return sign_of(acc, nacc)
 
 
 @njit(cache=True, inline="always")
 def incircle_nb(ax, ay, bx, by, cx, cy, dx, dy, w):
     """Exact sign of d relative to the circle through CCW a, b, c (+1 inside)."""
-    adx = ax - dx
-    bdx = bx - dx
-    cdx = cx - dx
-    ady = ay - dy
-    bdy = by - dy
-    cdy = cy - dy
+    adx, ady = ax - dx, ay - dy
+    bdx, bdy = bx - dx, by - dy
+    cdx, cdy = cx - dx, cy - dy
     bdxcdy = bdx * cdy
     cdxbdy = cdx * bdy
     alift = adx * adx + ady * ady
@@ -264,27 +211,13 @@ def incircle_nb(ax, ay, bx, by, cx, cy, dx, dy, w):
     permanent = ((abs(bdxcdy) + abs(cdxbdy)) * alift + (abs(cdxady) + abs(adxcdy)) * blift
                  + (abs(adxbdy) + abs(bdxady)) * clift)
     dmax = max(abs(adx), abs(ady), abs(bdx), abs(bdy), abs(cdx), abs(cdy))
-    if dmax < _I_DMAX and permanent > _I_LO:
-        errbound = ICC_ERRBOUND_A * permanent
-        if det > errbound:
-            return 1
-        if -det > errbound:
-            return -1
+    s = certain_sign(det, permanent, dmax, _I_DMAX, _I_LO, ICC_ERRBOUND_A, 0.0)
+    if s != 0:
+        return s
     return _incircle_exact(ax, ay, bx, by, cx, cy, dx, dy, w)
 
 
 # --------------------------------------------------------------------- python API
-def _xy(p, name):
-    try:
-        x, y = p
-        x, y = float(x), float(y)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} must be a pair of numbers, got {p!r}") from None
-    if not (math.isfinite(x) and math.isfinite(y)):
-        raise ValueError(f"{name} = {p!r} is not finite (NaN or infinity)")
-    return x, y
-
-
 _PY_WORK = workspace()
 
 
@@ -294,7 +227,7 @@ def orient2d(a, b, c) -> int:
     >>> orient2d((0, 0), (2, 0), (1, 0))
     0
     """
-    return int(orient2d_nb(*_xy(a, "a"), *_xy(b, "b"), *_xy(c, "c"), _PY_WORK))
+    return int(orient2d_nb(*as_xy(a, "a"), *as_xy(b, "b"), *as_xy(c, "c"), _PY_WORK))
 
 
 def incircle(a, b, c, d) -> int:
@@ -306,4 +239,5 @@ def incircle(a, b, c, d) -> int:
     >>> incircle((0, 0), (2, 0), (0, 2), (1, 1))
     1
     """
-    return int(incircle_nb(*_xy(a, "a"), *_xy(b, "b"), *_xy(c, "c"), *_xy(d, "d"), _PY_WORK))
+    return int(incircle_nb(*as_xy(a, "a"), *as_xy(b, "b"), *as_xy(c, "c"), *as_xy(d, "d"),
+                           _PY_WORK))

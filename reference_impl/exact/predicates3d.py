@@ -52,11 +52,11 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from reference_impl.exact.stages3d import (WORKSPACE3D_SIZE, _isp_det_perm, _o3_det_perm,
-                                  exact_coordinates_3d, insphere_exact, insphere_exact_stage,
-                                  orient3d_exact, orient3d_exact_stage)
-from reference_impl.exact.expansion import EPSILON
-from reference_impl.validate import as_points
+from reference_impl.exact.expansion import EPSILON, certain_sign
+from reference_impl.exact.stages3d import (WORKSPACE3D_SIZE, exact_coordinates_3d, insphere_det_perm,
+                                           insphere_exact, insphere_exact_stage, orient3d_det_perm,
+                                           orient3d_exact, orient3d_exact_stage)
+from reference_impl.validate import as_point_rows, as_xyz
 
 __all__ = ["orient3d", "insphere", "orient3d_batch", "insphere_batch", "orient3d_nb",
            "insphere_nb", "workspace3d", "exact_coordinates_3d", "orient3d_exact",
@@ -89,51 +89,21 @@ def workspace3d() -> np.ndarray:
 @njit(cache=True)
 def orient3d_nb(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz, w):
     """Exact orient3d sign (see the module docstring); ``w`` is a ``workspace3d()`` array."""
-    adx = ax - dx
-    bdx = bx - dx
-    cdx = cx - dx
-    ady = ay - dy
-    bdy = by - dy
-    cdy = cy - dy
-    adz = az - dz
-    bdz = bz - dz
-    cdz = cz - dz
-    det, permanent = _o3_det_perm(adx, ady, adz, bdx, bdy, bdz, cdx, cdy, cdz)
-    dmax = max(abs(adx), abs(bdx), abs(cdx), abs(ady), abs(bdy), abs(cdy),
-               abs(adz), abs(bdz), abs(cdz))
-    if dmax < _O_DMAX and permanent > _O_PLO:
-        errbound = O3D_ERRBOUND_A * permanent + _O_ABS
-        if det > errbound:
-            return 1
-        if -det > errbound:
-            return -1
+    det, permanent, dmax = orient3d_det_perm(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz)
+    s = certain_sign(det, permanent, dmax, _O_DMAX, _O_PLO, O3D_ERRBOUND_A, _O_ABS)
+    if s != 0:
+        return s
     return orient3d_exact_stage(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz, w)
 
 
 @njit(cache=True)
 def insphere_nb(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz, ex, ey, ez, w):
     """Exact insphere sign (see the module docstring); ``w`` is a ``workspace3d()`` array."""
-    aex = ax - ex
-    bex = bx - ex
-    cex = cx - ex
-    dex = dx - ex
-    aey = ay - ey
-    bey = by - ey
-    cey = cy - ey
-    dey = dy - ey
-    aez = az - ez
-    bez = bz - ez
-    cez = cz - ez
-    dez = dz - ez
-    det, permanent = _isp_det_perm(aex, aey, aez, bex, bey, bez, cex, cey, cez, dex, dey, dez)
-    dmax = max(abs(aex), abs(bex), abs(cex), abs(dex), abs(aey), abs(bey), abs(cey), abs(dey),
-               abs(aez), abs(bez), abs(cez), abs(dez))
-    if dmax < _I_DMAX and permanent > _I_PLO:
-        errbound = ISP_ERRBOUND_A * permanent + _I_ABS
-        if det > errbound:
-            return 1
-        if -det > errbound:
-            return -1
+    det, permanent, dmax = insphere_det_perm(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz,
+                                             ex, ey, ez)
+    s = certain_sign(det, permanent, dmax, _I_DMAX, _I_PLO, ISP_ERRBOUND_A, _I_ABS)
+    if s != 0:
+        return s
     return insphere_exact_stage(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz, ex, ey, ez, w)
 
 
@@ -160,23 +130,13 @@ def _insphere_many(a, b, c, d, e, w):
 _PY_WORK = workspace3d()
 
 
-def _rows(arrays, names) -> list[np.ndarray]:
-    out = [as_points(np.atleast_2d(x) if np.ndim(x) == 1 else x, name=nm, dim=3)
-           for x, nm in zip(arrays, names)]
-    k = len(out[0])
-    for x, nm in zip(out, names):
-        if len(x) != k:
-            raise ValueError(f"{nm} has {len(x)} points but {names[0]} has {k}")
-    return out
-
-
 def orient3d_batch(a, b, c, d) -> np.ndarray:
     """orient3d row by row for (k, 3) arrays; returns an int8 array of signs.
 
     >>> orient3d_batch([[0, 0, 0]], [[1, 0, 0]], [[0, 1, 0]], [[0, 0, 1]]).tolist()
     [-1]
     """
-    return _orient3d_many(*_rows((a, b, c, d), ("a", "b", "c", "d")), _PY_WORK)
+    return _orient3d_many(*as_point_rows((a, b, c, d), ("a", "b", "c", "d")), _PY_WORK)
 
 
 def insphere_batch(a, b, c, d, e) -> np.ndarray:
@@ -185,14 +145,7 @@ def insphere_batch(a, b, c, d, e) -> np.ndarray:
     >>> insphere_batch([[0, 0, 0]], [[1, 0, 0]], [[0, 1, 0]], [[0, 0, -1]], [[5, 5, 5]]).tolist()
     [-1]
     """
-    return _insphere_many(*_rows((a, b, c, d, e), ("a", "b", "c", "d", "e")), _PY_WORK)
-
-
-def _xyz(p, name) -> tuple[float, float, float]:
-    if isinstance(p, (str, bytes)) or np.ndim(p) != 1:
-        raise ValueError(f"{name} must be three numbers, got {p!r}")
-    q = as_points([p], name=name, dim=3)[0]
-    return float(q[0]), float(q[1]), float(q[2])
+    return _insphere_many(*as_point_rows((a, b, c, d, e), ("a", "b", "c", "d", "e")), _PY_WORK)
 
 
 def orient3d(a, b, c, d) -> int:
@@ -204,7 +157,7 @@ def orient3d(a, b, c, d) -> int:
     >>> orient3d((0, 0, 0), (1, 0, 0), (0, 1, 0), (5, 7, 0))
     0
     """
-    return int(orient3d_nb(*_xyz(a, "a"), *_xyz(b, "b"), *_xyz(c, "c"), *_xyz(d, "d"), _PY_WORK))
+    return int(orient3d_nb(*as_xyz(a, "a"), *as_xyz(b, "b"), *as_xyz(c, "c"), *as_xyz(d, "d"), _PY_WORK))
 
 
 def insphere(a, b, c, d, e) -> int:
@@ -214,5 +167,5 @@ def insphere(a, b, c, d, e) -> int:
     >>> insphere((0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, -1), (0.5, 0.5, -0.5))
     1
     """
-    return int(insphere_nb(*_xyz(a, "a"), *_xyz(b, "b"), *_xyz(c, "c"), *_xyz(d, "d"),
-                           *_xyz(e, "e"), _PY_WORK))
+    return int(insphere_nb(*as_xyz(a, "a"), *as_xyz(b, "b"), *as_xyz(c, "c"), *as_xyz(d, "d"),
+                           *as_xyz(e, "e"), _PY_WORK))

@@ -45,8 +45,11 @@ import numba
 import numpy as np
 from numba import njit
 
-from reference_impl.exact.expansion import EPSILON, add, diff, mul, negate, two_diff
-from reference_impl.exact.verify import exact_coordinates_3d, insphere_exact, orient3d_exact  # noqa: F401 (re-exported)
+from reference_impl.exact.expansion import (EPSILON, accumulate, add, compress, diff, mul, negate,
+                                            sign, sign_of, two_diff)
+from reference_impl.exact.scaling import pow2_scale
+from reference_impl.exact.verify import (exact_coordinates_3d, exact_sign, insphere_exact,  # noqa: F401 (re-exported)
+                                         orient3d_exact)
 
 O3D_ERRBOUND_B = (3.0 + 28.0 * EPSILON) * EPSILON
 O3D_ERRBOUND_C = 64.0 * EPSILON * EPSILON
@@ -78,54 +81,59 @@ _H, _TL = 103384, 103396             # 12 rounded differences and their 12 tails
 WORKSPACE3D_SIZE = 103408
 
 
-# --------------------------------------------------------------------- exact integer versions
-def _orient_python(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz) -> int:
-    return orient3d_exact(*exact_coordinates_3d([(ax, ay, az), (bx, by, bz), (cx, cy, cz),
-                                                 (dx, dy, dz)]))
-
-
-def _insphere_python(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz, ex, ey, ez) -> int:
-    return insphere_exact(*exact_coordinates_3d([(ax, ay, az), (bx, by, bz), (cx, cy, cz),
-                                                 (dx, dy, dz), (ex, ey, ez)]))
-
-
 # --------------------------------------------------------------------- floating-point formulas
 @njit(cache=True)
-def _o3_det_perm(adx, ady, adz, bdx, bdy, bdz, cdx, cdy, cdz):
-    """orient3d's determinant from the differences, and its permanent (both in floating point)."""
-    bdxcdy = bdx * cdy
-    cdxbdy = cdx * bdy
-    cdxady = cdx * ady
-    adxcdy = adx * cdy
-    adxbdy = adx * bdy
-    bdxady = bdx * ady
-    det = adz * (bdxcdy - cdxbdy) + bdz * (cdxady - adxcdy) + cdz * (adxbdy - bdxady)
-    perm = ((abs(bdxcdy) + abs(cdxbdy)) * abs(adz) + (abs(cdxady) + abs(adxcdy)) * abs(bdz)
-            + (abs(adxbdy) + abs(bdxady)) * abs(cdz))
+def _minus(px, py, pz, qx, qy, qz):
+    """p - q in floating point."""
+    return px - qx, py - qy, pz - qz
+
+
+@njit(cache=True)
+def _minor(x1, y1, x2, y2):
+    """x1*y2 - x2*y1 in floating point, and its permanent |x1*y2| + |x2*y1|."""
+    p = x1 * y2
+    q = x2 * y1
+    return p - q, abs(p) + abs(q)
+
+
+@njit(cache=True)
+def _det3(adx, ady, adz, bdx, bdy, bdz, cdx, cdy, cdz):
+    """The 3x3 determinant of the rows a, b, c and its permanent, in floating point."""
+    bc, bc_p = _minor(bdx, bdy, cdx, cdy)
+    ca, ca_p = _minor(cdx, cdy, adx, ady)
+    ab, ab_p = _minor(adx, ady, bdx, bdy)
+    det = adz * bc + bdz * ca + cdz * ab
+    perm = bc_p * abs(adz) + ca_p * abs(bdz) + ab_p * abs(cdz)
     return det, perm
 
 
 @njit(cache=True)
-def _isp_det_perm(aex, aey, aez, bex, bey, bez, cex, cey, cez, dex, dey, dez):
-    """insphere's determinant from the differences, and its permanent (Shewchuk's formulas)."""
-    aexbey = aex * bey
-    bexaey = bex * aey
-    bexcey = bex * cey
-    cexbey = cex * bey
-    cexdey = cex * dey
-    dexcey = dex * cey
-    dexaey = dex * aey
-    aexdey = aex * dey
-    aexcey = aex * cey
-    cexaey = cex * aey
-    bexdey = bex * dey
-    dexbey = dex * bey
-    ab = aexbey - bexaey
-    bc = bexcey - cexbey
-    cd = cexdey - dexcey
-    da = dexaey - aexdey
-    ac = aexcey - cexaey
-    bd = bexdey - dexbey
+def orient3d_det_perm(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz):
+    """orient3d's determinant, its permanent and the largest |difference| (all in floating
+    point), from the four points (pass d = 0 for differences already taken)."""
+    adx, ady, adz = _minus(ax, ay, az, dx, dy, dz)
+    bdx, bdy, bdz = _minus(bx, by, bz, dx, dy, dz)
+    cdx, cdy, cdz = _minus(cx, cy, cz, dx, dy, dz)
+    det, perm = _det3(adx, ady, adz, bdx, bdy, bdz, cdx, cdy, cdz)
+    dmax = max(abs(adx), abs(bdx), abs(cdx), abs(ady), abs(bdy), abs(cdy),
+               abs(adz), abs(bdz), abs(cdz))
+    return det, perm, dmax
+
+
+@njit(cache=True)
+def insphere_det_perm(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz, ex, ey, ez):
+    """insphere's determinant, its permanent and the largest |difference| (Shewchuk's
+    formulas, in floating point) from the five points (e = 0 for differences already taken)."""
+    aex, aey, aez = _minus(ax, ay, az, ex, ey, ez)
+    bex, bey, bez = _minus(bx, by, bz, ex, ey, ez)
+    cex, cey, cez = _minus(cx, cy, cz, ex, ey, ez)
+    dex, dey, dez = _minus(dx, dy, dz, ex, ey, ez)
+    ab, ab_p = _minor(aex, aey, bex, bey)
+    bc, bc_p = _minor(bex, bey, cex, cey)
+    cd, cd_p = _minor(cex, cey, dex, dey)
+    da, da_p = _minor(dex, dey, aex, aey)
+    ac, ac_p = _minor(aex, aey, cex, cey)
+    bd, bd_p = _minor(bex, bey, dex, dey)
     abc = aez * bc - bez * ac + cez * ab
     bcd = bez * cd - cez * bd + dez * bc
     cda = cez * da + dez * ac + aez * cd
@@ -135,16 +143,12 @@ def _isp_det_perm(aex, aey, aez, bex, bey, bez, cex, cey, cez, dex, dey, dez):
     clift = cex * cex + cey * cey + cez * cez
     dlift = dex * dex + dey * dey + dez * dez
     det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd)
-    az, bz, cz, dz = abs(aez), abs(bez), abs(cez), abs(dez)
-    ab_p = abs(aexbey) + abs(bexaey)
-    bc_p = abs(bexcey) + abs(cexbey)
-    cd_p = abs(cexdey) + abs(dexcey)
-    da_p = abs(dexaey) + abs(aexdey)
-    ac_p = abs(aexcey) + abs(cexaey)
-    bd_p = abs(bexdey) + abs(dexbey)
-    perm = ((cd_p * bz + bd_p * cz + bc_p * dz) * alift + (da_p * cz + ac_p * dz + cd_p * az) * blift
-            + (ab_p * dz + bd_p * az + da_p * bz) * clift + (bc_p * az + ac_p * bz + ab_p * cz) * dlift)
-    return det, perm
+    az_, bz_, cz_, dz_ = abs(aez), abs(bez), abs(cez), abs(dez)
+    perm = ((cd_p * bz_ + bd_p * cz_ + bc_p * dz_) * alift + (da_p * cz_ + ac_p * dz_ + cd_p * az_) * blift
+            + (ab_p * dz_ + bd_p * az_ + da_p * bz_) * clift + (bc_p * az_ + ac_p * bz_ + ab_p * cz_) * dlift)
+    dmax = max(abs(aex), abs(bex), abs(cex), abs(dex), abs(aey), abs(bey), abs(cey), abs(dey),
+               abs(aez), abs(bez), abs(cez), abs(dez))
+    return det, perm, dmax
 
 
 # --------------------------------------------------------------------- exact stages
@@ -153,58 +157,6 @@ def _isp_det_perm(aex, aey, aez, bex, bey, bez, cex, cey, cez, dex, dey, dez):
 # determinant of the *rounded* differences decides unless it is within Shewchuk's
 # errboundB of zero; (C) the exact determinant of the exact differences.  Expansions are
 # compressed as they go, so they stay a few components long.
-@njit(cache=True)
-def _scale3(v, lo_scaled):
-    """Scale v by 2**-e so that max|v| is in [0.5, 1); False if a non-zero value would fall
-    below lo_scaled (then nothing is scaled)."""
-    m = 0.0
-    for x in v:
-        m = max(m, abs(x))
-    if m == 0.0:
-        return True
-    _, e = math.frexp(m)
-    lo = math.ldexp(lo_scaled, e)   # the threshold in unscaled units
-    for x in v:
-        if x != 0.0 and abs(x) < lo:
-            return False
-    k = -e
-    while k != 0:                   # at most two exact steps of at most 2**1000
-        step = max(-1000, min(1000, k))
-        f = math.ldexp(1.0, step)
-        for i in range(v.shape[0]):
-            v[i] *= f
-        k -= step
-    return True
-
-
-@njit(cache=True)
-def _compress(e, n):
-    """Shewchuk's compress, in place: the same value as a shorter expansion; returns its length."""
-    bottom = n - 1
-    q = e[bottom]
-    for i in range(n - 2, -1, -1):
-        enow = e[i]
-        qnew = q + enow
-        small = enow - (qnew - q)
-        if small != 0.0:
-            e[bottom] = qnew
-            bottom -= 1
-            q = small
-        else:
-            q = qnew
-    top = 0
-    for i in range(bottom + 1, n):
-        hnow = e[i]
-        qnew = hnow + q
-        small = q - (qnew - hnow)
-        if small != 0.0:
-            e[top] = small
-            top += 1
-        q = qnew
-    e[top] = q
-    return top + 1
-
-
 @njit(cache=True)
 def _diffs(w, nrows):
     """Differences of rows 0..nrows-1 minus the last row, exactly, into the workspace."""
@@ -347,7 +299,7 @@ def _minor2(w, q):
     n1 = mul(xi, int(ln[3 * i]), yj, int(ln[3 * j + 1]), p, t1, t2)
     n2 = mul(xj, int(ln[3 * j]), yi, int(ln[3 * i + 1]), r, t1, t2)
     negate(r, n2)
-    ln[12 + slot] = _compress(out, add(p, n1, r, n2, out))
+    ln[12 + slot] = compress(out, add(p, n1, r, n2, out))
 
 
 @njit(cache=True)
@@ -375,7 +327,7 @@ def _minor3(w, r, out):
     n2 = _zm(w, t[3], t[4], t[5], p2)
     n3 = _zm(w, t[6], t[7], t[8], p3)
     nq = add(p1, n1, p2, n2, q)
-    return _compress(out, add(q, nq, p3, n3, out))
+    return compress(out, add(q, nq, p3, n3, out))
 
 
 @njit(cache=True)
@@ -383,8 +335,7 @@ def _sign_estimate(e, n):
     est = 0.0
     for i in range(n):
         est += e[i]
-    top = e[n - 1]
-    return (1 if top > 0.0 else (-1 if top < 0.0 else 0)), est
+    return sign_of(e, n), est
 
 
 @njit(cache=True)
@@ -397,35 +348,6 @@ def _orient_expansion(w):
     for r in range(4, 5):        # (a loop index: not a literal, see _PAIRS)
         n = _minor3(w, r, out)
     return _sign_estimate(out, n)
-
-
-@njit(cache=True)
-def orient3d_exact_stage(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz, w):
-    v = w[_V:_V + 12]
-    v[0] = ax; v[1] = ay; v[2] = az; v[3] = bx; v[4] = by; v[5] = bz
-    v[6] = cx; v[7] = cy; v[8] = cz; v[9] = dx; v[10] = dy; v[11] = dz
-    if _small_ints(w, 3, 16):
-        t = w[_I:_I + 9]
-        det, _ = _o3_det_perm(t[0], t[1], t[2], t[3], t[4], t[5], t[6], t[7], t[8])
-        return 1 if det > 0.0 else (-1 if det < 0.0 else 0)
-    if not _scale3(v, _O_EXACT_MIN):
-        with numba.objmode(s="int64"):
-            s = _orient_python(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz)
-        return s
-    _diffs(w, 3)
-    if _heads(w, 9):
-        sgn, est = _orient_expansion(w)
-        h = w[_H:_H + 9]
-        _, perm = _o3_det_perm(h[0], h[1], h[2], h[3], h[4], h[5], h[6], h[7], h[8])
-        if abs(est) >= O3D_ERRBOUND_B * perm:
-            return sgn
-        det = est + _o3_first_order(h, w[_TL:_TL + 9])
-        if perm > _C_PLO and abs(det) > O3D_ERRBOUND_C * perm + RESULT_ERRBOUND * abs(est):
-            return 1 if det > 0.0 else -1
-        _diffs(w, 3)
-    sgn, _ = _orient_expansion(w)
-    return sgn
-
 
 
 @njit(cache=True)
@@ -454,7 +376,7 @@ def _insphere_expansion(w):
                 for q in range(n):
                     s2[q] = lift[q]
                 n = add(s2, n, sq, nsq, lift)
-        ln[22 + r] = _compress(lift, n)
+        ln[22 + r] = compress(lift, n)
     # det = dlift*abc - clift*dab + blift*cda - alift*bcd
     term = w[_TERM:_TERM + 9216]
     t1 = w[_T1:_T1 + 9216]
@@ -467,47 +389,69 @@ def _insphere_expansion(w):
         m = w[_M3 + 192 * (0, 3, 2, 1)[step]:_M3 + 192 * (0, 3, 2, 1)[step] + 192]
         nm = int(ln[(18, 21, 20, 19)[step]])
         lift = w[_LIFT + 24 * r:_LIFT + 24 * r + 24]
-        nt = _compress(term, mul(m, nm, lift, int(ln[22 + r]), term, t1, t2))
+        nt = compress(term, mul(m, nm, lift, int(ln[22 + r]), term, t1, t2))
         if step % 2 == 1:
             negate(term, nt)
-        if nacc == 0:
-            for q in range(nt):
-                acc[q] = term[q]
-            nacc = nt
-        else:
-            k = _compress(acc2, add(acc, nacc, term, nt, acc2))
-            for q in range(k):
-                acc[q] = acc2[q]
-            nacc = k
+        nacc = accumulate(acc, nacc, term, nt, acc2, True)
     return _sign_estimate(acc, nacc)
 
 
 @njit(cache=True)
+def _det_perm(t, nrows):
+    """The float determinant and permanent of orient3d (nrows 3) or insphere (4) from the
+    differences t."""
+    if nrows == 3:
+        det, perm, _ = orient3d_det_perm(t[0], t[1], t[2], t[3], t[4], t[5], t[6], t[7], t[8],
+                                         0.0, 0.0, 0.0)
+    else:
+        det, perm, _ = insphere_det_perm(t[0], t[1], t[2], t[3], t[4], t[5], t[6], t[7], t[8],
+                                         t[9], t[10], t[11], 0.0, 0.0, 0.0)
+    return det, perm
+
+
+@njit(cache=True)
+def _exact_stages(w, nrows, bits, exact_min, bound_b, bound_c):
+    """Stages (a)-(d) of the module docstring for orient3d (nrows 3) or insphere (nrows 4),
+    the coordinates of the nrows + 1 points at w[_V:]."""
+    n = 3 * nrows
+    if _small_ints(w, nrows, bits):
+        det, _ = _det_perm(w[_I:_I + n], nrows)
+        return sign(det)
+    v = w[_V:_V + n + 3]
+    if not pow2_scale(v, exact_min):        # magnitudes too far apart: Python integers
+        with numba.objmode(s="int64"):
+            s = exact_sign(v, 3)
+        return s
+    _diffs(w, nrows)
+    if _heads(w, n):
+        sgn, est = _orient_expansion(w) if nrows == 3 else _insphere_expansion(w)
+        h = w[_H:_H + n]
+        _, perm = _det_perm(h, nrows)
+        if abs(est) >= bound_b * perm:
+            return sgn
+        t = w[_TL:_TL + n]
+        det = est + (_o3_first_order(h, t) if nrows == 3 else _isp_first_order(h, t))
+        if perm > _C_PLO and abs(det) > bound_c * perm + RESULT_ERRBOUND * abs(est):
+            return 1 if det > 0.0 else -1
+        _diffs(w, nrows)
+    sgn, _ = _orient_expansion(w) if nrows == 3 else _insphere_expansion(w)
+    return sgn
+
+
+@njit(cache=True)
+def orient3d_exact_stage(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz, w):
+    """orient3d's sign by the exact stages (after an inconclusive filter)."""
+    v = w[_V:_V + 12]
+    v[0] = ax; v[1] = ay; v[2] = az; v[3] = bx; v[4] = by; v[5] = bz
+    v[6] = cx; v[7] = cy; v[8] = cz; v[9] = dx; v[10] = dy; v[11] = dz
+    return _exact_stages(w, 3, 16, _O_EXACT_MIN, O3D_ERRBOUND_B, O3D_ERRBOUND_C)
+
+
+@njit(cache=True)
 def insphere_exact_stage(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz, ex, ey, ez, w):
+    """insphere's sign by the exact stages (after an inconclusive filter)."""
     v = w[_V:_V + 15]
     v[0] = ax; v[1] = ay; v[2] = az; v[3] = bx; v[4] = by; v[5] = bz
     v[6] = cx; v[7] = cy; v[8] = cz; v[9] = dx; v[10] = dy; v[11] = dz
     v[12] = ex; v[13] = ey; v[14] = ez
-    if _small_ints(w, 4, 9):
-        t = w[_I:_I + 12]
-        det, _ = _isp_det_perm(t[0], t[1], t[2], t[3], t[4], t[5], t[6], t[7], t[8],
-                               t[9], t[10], t[11])
-        return 1 if det > 0.0 else (-1 if det < 0.0 else 0)
-    if not _scale3(v, _I_EXACT_MIN):
-        with numba.objmode(s="int64"):
-            s = _insphere_python(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz, ex, ey, ez)
-        return s
-    _diffs(w, 4)
-    if _heads(w, 12):
-        sgn, est = _insphere_expansion(w)
-        h = w[_H:_H + 12]
-        _, perm = _isp_det_perm(h[0], h[1], h[2], h[3], h[4], h[5], h[6], h[7], h[8],
-                                h[9], h[10], h[11])
-        if abs(est) >= ISP_ERRBOUND_B * perm:
-            return sgn
-        det = est + _isp_first_order(h, w[_TL:_TL + 12])
-        if perm > _C_PLO and abs(det) > ISP_ERRBOUND_C * perm + RESULT_ERRBOUND * abs(est):
-            return 1 if det > 0.0 else -1
-        _diffs(w, 4)
-    sgn, _ = _insphere_expansion(w)
-    return sgn
+    return _exact_stages(w, 4, 9, _I_EXACT_MIN, ISP_ERRBOUND_B, ISP_ERRBOUND_C)

@@ -38,7 +38,7 @@ import operator
 __all__ = ["exact_coordinates", "orient_exact", "incircle_exact", "convex_hull_exact",
            "check_delaunay", "check_triangulation_size", "brute_force_empty_circles",
            "exact_coordinates_3d", "orient3d_exact", "insphere_exact", "check_delaunay_3d",
-           "brute_force_empty_spheres"]
+           "brute_force_empty_spheres", "exact_sign"]
 
 
 def exact_coordinates(points: Iterable[Sequence[float]]) -> list[tuple[int, int]]:
@@ -298,6 +298,24 @@ def insphere_exact(a, b, c, d, e) -> int:
     v = (lift[3] * _det3(ra, rb, rc) - lift[2] * _det3(rd, ra, rb)
          + lift[1] * _det3(rc, rd, ra) - lift[0] * _det3(rb, rc, rd))
     return (v > 0) - (v < 0)
+
+
+def exact_sign(coords: Sequence[float], dim: int) -> int:
+    """The exact predicate sign of points given as one flat sequence of coordinates.
+
+    ``dim`` 2: three points give orient2d, four incircle; ``dim`` 3: four points give
+    orient3d, five insphere.  (The numba predicates' Python fallback, in integers.)
+
+    >>> exact_sign([0.0, 0.0, 1.0, 0.0, 0.0, 1.0], 2), exact_sign([0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, -1], 3)
+    (1, 1)
+    """
+    flat = [float(x) for x in coords]
+    pts = [flat[i:i + dim] for i in range(0, len(flat), dim)]
+    if dim == 2:
+        P = exact_coordinates(pts)
+        return orient_exact(*P) if len(P) == 3 else incircle_exact(*P)
+    Q = exact_coordinates_3d(pts)
+    return orient3d_exact(*Q) if len(Q) == 4 else insphere_exact(*Q)
 
 
 def _solid_base(P: list, distinct: list[int]) -> tuple[int, int, int, int] | None:

@@ -50,6 +50,7 @@ from reference_impl.mesh import status
 from reference_impl.mesh.ordering import mix
 from reference_impl.validate import as_points, as_queries
 from reference_impl.exact.predicates3d import workspace3d
+from reference_impl.exact.scaling import pow2_exponent
 
 __all__ = ["Delaunay3D", "delaunay_3d", "insertion_order_3d", "hilbert_index_3d"]
 
@@ -142,19 +143,6 @@ def insertion_order_3d(points: np.ndarray, brio: bool = True) -> np.ndarray:
     return np.lexsort((P[:, 2], P[:, 1], P[:, 0], keys))
 
 
-def _power_of_two_scale(P: np.ndarray) -> int:
-    """k such that P * 2**k is exact and its largest magnitude is in [0.5, 1) when possible."""
-    A = np.abs(P)
-    amax = float(A.max()) if A.size else 0.0
-    if amax == 0.0:
-        return 0
-    k = -math.frexp(amax)[1]
-    if k < 0:                             # scaling down: keep every non-zero value normal
-        emin = math.frexp(float(A[A > 0].min()))[1]
-        k = max(k, min(0, -1021 - emin))
-    return k
-
-
 # ----------------------------------------------------------------------------- the kernel driver
 class Mesh:
     """Arrays and state of one ``kernel3d`` run over points already in insertion order.
@@ -167,7 +155,7 @@ class Mesh:
     def __init__(self, coords: np.ndarray) -> None:
         n = len(coords)
         self.n = n
-        k = _power_of_two_scale(coords)
+        k = -pow2_exponent(coords, keep_normal=True)   # exact: every non-zero value stays normal
         S = np.ldexp(coords, k) if k else coords
         self.X = np.ascontiguousarray(S[:, 0])
         self.Y = np.ascontiguousarray(S[:, 1])

@@ -11,7 +11,7 @@ import numpy as np
 from numba import njit
 
 from reference_impl.mesh.kernel import (DEAD, INF, MARK, NBR, RECORD, SPARE, STATE_SIZE, S_LAST, S_NTRI, S_STAMP, VTX,
-                                        extract, insert, is_ghost, seed)
+                                        insert, is_ghost, seed)
 from reference_impl.exact.predicates import incircle_nb, orient2d_nb
 from reference_impl.mesh.status import FLAT, LOST, OK
 

@@ -44,15 +44,16 @@ import numpy as np
 from numba import njit
 from numpy.typing import ArrayLike
 
+from reference_impl.mesh import status
 from reference_impl.mesh.delaunay import Delaunay
+from reference_impl.mesh.status import CROSSING, LOST
 from reference_impl.mesh.topology import find_edge, flip, slot, third, unique_edges, vertex_triangles
-from reference_impl.validate import as_index_rows, as_points
+from reference_impl.validate import as_index_rows
 from reference_impl.exact.predicates import incircle_nb, orient2d_nb, workspace
 
 __all__ = ["ConstrainedDelaunay", "constrained_delaunay", "ConstrainedMesh", "constrain_delaunay",
            "fan_search", "insert_segments", "orient_many", "ray_ahead", "format_point"]
 
-_CROSSING, _LOST = 1, 2           # error codes of the numba kernel
 
 
 # ----------------------------------------------------------------------------- numba kernel
@@ -178,7 +179,7 @@ def _insert_segment(s, a, b, tri, nbr, cid, vt, X, Y, w, through, err, queue, to
         by = Y[b]
         t, x = fan_search(tri, nbr, vt, X, Y, a, bx, by, b, w)
         if t < 0:
-            err[0] = _LOST
+            err[0] = LOST
             return False
         if x >= 0:                                   # the segment runs along edge (a, x)
             k = third(tri, t, a, x)
@@ -203,7 +204,7 @@ def _insert_segment(s, a, b, tri, nbr, cid, vt, X, Y, w, through, err, queue, to
         nt = 1
         while True:
             if cid[t, kc] >= 0:
-                err[0] = _CROSSING
+                err[0] = CROSSING
                 err[2] = cid[t, kc]
                 err[3] = right
                 err[4] = left
@@ -261,11 +262,11 @@ def _insert_segment(s, a, b, tri, nbr, cid, vt, X, Y, w, through, err, queue, to
                 nq += 1
                 stall += 1
                 if stall > nq:                       # no flippable edge: cannot happen (Sloan 1993)
-                    err[0] = _LOST
+                    err[0] = LOST
                     return False
         t, k = find_edge(tri, nbr, vt, a, e)
         if t < 0:
-            err[0] = _LOST
+            err[0] = LOST
             return False
         cid[t, k] = s
         o = nbr[t, k]
@@ -316,11 +317,6 @@ def insert_segments(tri, nbr, cid, vt, X, Y, seg, through, err, w):
 
 
 # ----------------------------------------------------------------------------- python API
-def _as_segments(segments, n: int) -> np.ndarray:
-    """Validate segments: an (k, 2) array of integer point indices in 0..n-1."""
-    return as_index_rows(segments, n, 2, "segments")
-
-
 class ConstrainedMesh(NamedTuple):
     """The arrays of ``constrain_delaunay``: the mesh in the public layout plus the constraints."""
     tri: np.ndarray
@@ -358,6 +354,7 @@ def constrain_delaunay(d: Delaunay, segments: np.ndarray) -> ConstrainedMesh:
     order = np.lexsort((pts[seg[:, 1], 1], pts[seg[:, 1], 0], pts[seg[:, 0], 1], pts[seg[:, 0], 0]))
     vt = vertex_triangles(tri, n)
     err = np.zeros(5, dtype=np.int64)
+    err[0] = status.OK                                # the kernel writes CROSSING or LOST here
     sub_through = np.full(len(seg), -1, dtype=np.int64)
     ok = insert_segments(tri, nbr, cid, vt, pts[:, 0].copy(), pts[:, 1].copy(),
                          np.ascontiguousarray(seg[order]), sub_through, err, workspace())
@@ -365,8 +362,8 @@ def constrain_delaunay(d: Delaunay, segments: np.ndarray) -> ConstrainedMesh:
     cid[mask] = order[cid[mask]]                      # back to input segment numbers
     through[order] = sub_through
     if not ok:
-        if err[0] != _CROSSING:
-            raise RuntimeError("constrained Delaunay: lost the segment walk (please report this input)")
+        if status.check(err[0], "constrained Delaunay: the segment walk") != CROSSING:
+            raise status.KernelError(f"constrained Delaunay: the segment walk ended with {status.NAMES[int(err[0])]}")
         return ConstrainedMesh(tri, nbr, cid, through,
                        (int(order[err[1]]), int(order[err[2]]), int(err[3]), int(err[4])))
     return ConstrainedMesh(tri, nbr, cid, through, None)
@@ -404,7 +401,7 @@ class ConstrainedDelaunay:
 
     def __init__(self, points: ArrayLike, segments: ArrayLike = ()) -> None:
         self._delaunay = Delaunay(points)
-        self._segments = _as_segments(segments, len(self._delaunay.points))
+        self._segments = as_index_rows(segments, len(self._delaunay.points), 2, "segments")
         k = constrain_delaunay(self._delaunay, self._segments)
         if k.error is not None:
             s, o = k.error[:2]

@@ -59,7 +59,8 @@ from reference_impl.mesh.delaunay import Delaunay, as_delaunay
 from reference_impl.exact.expansion import EPSILON
 from reference_impl.structures.hull import convex_hull
 from reference_impl.exact.predicates import orient2d_nb, workspace
-from reference_impl.structures.voronoi import _pow2_exponent, circumcentres, delaunay_adjacency
+from reference_impl.exact.scaling import pow2_exponent
+from reference_impl.structures.voronoi import circumcentres, delaunay_adjacency
 
 __all__ = ["Circle", "largest_empty_circle"]
 
@@ -264,7 +265,7 @@ def largest_empty_circle(points: ArrayLike | Delaunay) -> Circle:
     pts = d.points
     if not d.live.any():
         raise ValueError("points is empty: the largest empty circle needs at least one point")
-    k = _pow2_exponent(pts)
+    k = pow2_exponent(pts)
     X = np.ldexp(pts[:, 0], -k)
     Y = np.ldexp(pts[:, 1], -k)
     simp = d.simplices

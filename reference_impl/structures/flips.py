@@ -56,11 +56,6 @@ def _workspace():
     return np.empty(WORKSPACE_SIZE, dtype=np.float64)
 
 
-def _as_index_rows(rows, n: int, width: int = 3, what: str = "triangle") -> np.ndarray:
-    """(m, width) int64 array of point indices in 0..n-1, or ValueError naming the problem."""
-    return as_index_rows(rows, n, width, f"{what}s", allow_integral_floats=True)
-
-
 @njit(cache=True)
 def _first_non_ccw(X, Y, T):
     """Index of the first triangle that is not strictly counter-clockwise, or -1 (and its sign)."""
@@ -85,7 +80,7 @@ def _canonical(T: np.ndarray) -> np.ndarray:
 def _validate(P: np.ndarray, triangles) -> tuple[np.ndarray, np.ndarray, Delaunay]:
     """(triangles in canonical order, their neighbours, the Delaunay of P) or ValueError."""
     n = len(P)
-    T = _as_index_rows(triangles, n)
+    T = as_index_rows(triangles, n, 3, "triangles", allow_integral_floats=True)
     d = Delaunay(P)
     rep = d.index_map
     T = rep[T]
@@ -255,7 +250,7 @@ def apply_flips(points, triangles, flips, only_illegal: bool = True) -> np.ndarr
     """
     P = as_points(points)
     T, nbr, d = _validate(P, triangles)
-    F = d.index_map[_as_index_rows(flips, len(P), width=2, what="flip")]
+    F = d.index_map[as_index_rows(flips, len(P), 2, "flips", allow_integral_floats=True)]
     if len(F) and len(T) == 0:
         raise ValueError("flip 0: there is no triangle, so no edge can be flipped")
     vt = vertex_triangles(T, len(P))
@@ -279,7 +274,7 @@ def _mesh(points, triangles) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.nda
     """Validated points, triangles (strictly CCW, manifold), their neighbours and the
     boundary-edge vertex mask."""
     P = as_points(points)
-    T = _as_index_rows(triangles, len(P))
+    T = as_index_rows(triangles, len(P), 3, "triangles", allow_integral_floats=True)
     t, s = _first_non_ccw(P[:, 0].copy(), P[:, 1].copy(), T)
     if t >= 0:
         what = "degenerate (zero area)" if s == 0 else "clockwise"

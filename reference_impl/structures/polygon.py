@@ -28,7 +28,7 @@ from reference_impl.exact.predicates import orient2d, workspace
 from reference_impl.mesh.delaunay import Delaunay
 from reference_impl.mesh.topology import triangles_left_of
 from reference_impl.structures.constrained import constrain_delaunay, format_point, orient_many
-from reference_impl.validate import as_points
+from reference_impl.validate import as_ring
 
 __all__ = ["PolygonTriangulation", "polygon_triangulation"]
 
@@ -46,20 +46,6 @@ class PolygonTriangulation(NamedTuple):
     simplices: np.ndarray
     neighbors: np.ndarray
     rings: tuple
-
-
-def _clean_ring(ring, name: str) -> np.ndarray:
-    """Validated (k, 2) ring without repeated consecutive vertices or a closing copy of the first."""
-    pts = as_points(ring, name=name)
-    if len(pts):
-        keep = np.ones(len(pts), dtype=bool)
-        keep[1:] = (pts[1:] != pts[:-1]).any(axis=1)
-        pts = pts[keep]
-        if len(pts) > 1 and (pts[0] == pts[-1]).all():
-            pts = pts[:-1]
-    if len(pts) < 3:
-        raise ValueError(f"{name} needs at least 3 distinct vertices, got {len(pts)}")
-    return pts
 
 
 def _winding(p, ring_pts: np.ndarray) -> int:
@@ -95,7 +81,7 @@ def polygon_triangulation(boundary: ArrayLike, holes: Sequence[ArrayLike] | None
     if isinstance(holes, (str, bytes)):
         raise ValueError("holes must be a sequence of polygons")
     names = ["boundary"] + [f"hole {h}" for h in range(len(holes))]
-    rings = [_clean_ring(boundary, "boundary")] + [_clean_ring(h, f"holes[{i}]") for i, h in enumerate(holes)]
+    rings = [as_ring(boundary, "boundary")] + [as_ring(h, f"holes[{i}]") for i, h in enumerate(holes)]
     sizes = np.array([len(r) for r in rings])
     offset = np.concatenate([[0], np.cumsum(sizes)])
     pts = np.vstack(rings)

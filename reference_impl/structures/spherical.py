@@ -44,6 +44,7 @@ from reference_impl.mesh.delaunay3d import Mesh, input_index_map, insertion_orde
 from reference_impl.mesh.topology import triangle_neighbors
 from reference_impl.validate import as_points
 from reference_impl.exact.predicates3d import orient3d_batch
+from reference_impl.exact.scaling import pow2_exponent
 
 __all__ = ["SphericalDelaunay", "spherical_delaunay", "lonlat_to_xyz"]
 
@@ -79,7 +80,7 @@ def lonlat_to_xyz(lonlat) -> np.ndarray:
 def _directions(points) -> np.ndarray:
     """(n, 2) lon/lat degrees or (n, 3) vectors -> (n, 3) unit vectors (validated)."""
     if isinstance(points, (str, bytes)):
-        raise ValueError(f"points must be (n, 2) longitude/latitude or (n, 3) vectors, got text")
+        raise ValueError("points must be (n, 2) longitude/latitude or (n, 3) vectors, got text")
     try:
         shape = np.shape(points)
     except ValueError:
@@ -93,7 +94,7 @@ def _directions(points) -> np.ndarray:
     zero = np.flatnonzero(m == 0)
     if len(zero):
         raise ValueError(f"points[{zero[0]}] is the zero vector: it has no direction")
-    v = np.ldexp(v, -np.frexp(m)[1][:, None])          # exact rescale: no overflow in the norm
+    v = np.ldexp(v, -pow2_exponent(v, axis=1)[:, None])   # exact rescale: no overflow in the norm
     return v / np.linalg.norm(v, axis=1, keepdims=True) + 0.0
 
 

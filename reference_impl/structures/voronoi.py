@@ -52,36 +52,13 @@ from numpy.typing import ArrayLike
 
 from reference_impl.mesh.delaunay import Delaunay, as_delaunay
 from reference_impl.mesh.topology import each_edge_once, slot, vertex_adjacency
+from reference_impl.exact.scaling import pow2_exponent
+from reference_impl.validate import as_bbox, as_points  # noqa: F401 (as_bbox re-exported)
 
 __all__ = ["voronoi", "as_bbox"]
 
 _FAR = 2.0 ** 900         # circumcentres farther than this (in scaled units) are pulled back to it
 _GEN_FAR = -5             # edge generators: >= 0 a bisector with that site, -1..-4 a box side
-
-
-def as_bbox(bbox: ArrayLike) -> np.ndarray:
-    """Validate a box ``(xmin, ymin, xmax, ymax)`` and return it as a float64 array.
-
-    >>> as_bbox((0, 0, 2, 1)).tolist()
-    [0.0, 0.0, 2.0, 1.0]
-    >>> as_bbox((0, 0, 0, 1))
-    Traceback (most recent call last):
-    ...
-    ValueError: bbox must have xmin < xmax and ymin < ymax, got (0.0, 0.0, 0.0, 1.0)
-    """
-    if isinstance(bbox, (str, bytes)):
-        raise ValueError(f"bbox must be 4 numbers (xmin, ymin, xmax, ymax), got text {bbox!r}")
-    try:
-        box = np.asarray(bbox, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise ValueError(f"bbox must be 4 numbers (xmin, ymin, xmax, ymax), got {bbox!r}") from None
-    if box.shape != (4,):
-        raise ValueError(f"bbox must be 4 numbers (xmin, ymin, xmax, ymax), got shape {box.shape}")
-    if not np.isfinite(box).all():
-        raise ValueError(f"bbox must be finite, got {tuple(box.tolist())}")
-    if not (box[0] < box[2] and box[1] < box[3]):
-        raise ValueError(f"bbox must have xmin < xmax and ymin < ymax, got {tuple(box.tolist())}")
-    return box + 0.0
 
 
 def delaunay_adjacency(d: Delaunay) -> tuple[np.ndarray, np.ndarray]:
@@ -109,12 +86,6 @@ def delaunay_adjacency(d: Delaunay) -> tuple[np.ndarray, np.ndarray]:
     return vertex_adjacency(a, b, n, rank)
 
 
-def _pow2_exponent(*arrays: np.ndarray) -> int:
-    """k such that the largest magnitude times 2**-k lies in [0.5, 1) (0 for all zeros)."""
-    m = max((float(np.abs(a).max()) for a in arrays if a.size), default=0.0)
-    return math.frexp(m)[1] if m > 0.0 else 0
-
-
 def circumcentres(simp: np.ndarray, X: np.ndarray, Y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Circumcentres of counter-clockwise triangles (rows of ``simp`` index X, Y).
 
@@ -136,7 +107,7 @@ def circumcentres(simp: np.ndarray, X: np.ndarray, Y: np.ndarray) -> tuple[np.nd
     xs, ys = X[simp], Y[simp]
     ex = np.stack([xs[:, (j + 1) % 3] - xs[:, (j + 2) % 3] for j in range(3)], axis=1)   # edge opposite j
     ey = np.stack([ys[:, (j + 1) % 3] - ys[:, (j + 2) % 3] for j in range(3)], axis=1)
-    e = np.frexp(np.maximum(np.abs(ex).max(axis=1), np.abs(ey).max(axis=1)))[1]
+    e = pow2_exponent(ex, ey, axis=1)
     opp = np.ldexp(ex, -e[:, None]) ** 2 + np.ldexp(ey, -e[:, None]) ** 2
     first = np.zeros(len(simp), dtype=np.int64)
     for j in (1, 2):
@@ -436,7 +407,7 @@ def voronoi(points: ArrayLike | Delaunay, bbox: ArrayLike) -> list[np.ndarray]:
         return []
     rep = d.index_map
     sites = np.unique(rep[rep >= 0])
-    k = _pow2_exponent(pts, box)
+    k = pow2_exponent(pts, box)
     X = np.ldexp(pts[:, 0], -k)
     Y = np.ldexp(pts[:, 1], -k)
     sbox = np.ldexp(box, -k)

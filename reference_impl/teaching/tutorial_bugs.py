@@ -89,7 +89,7 @@ False
 """
 from __future__ import annotations
 
-import itertools
+import itertools  # noqa: F401 (the doctests use it)
 from typing import Iterable, Sequence
 
 import numpy as np
