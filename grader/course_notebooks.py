@@ -30,7 +30,7 @@ from pathlib import Path
 import nbformat
 import yaml
 
-from .problems import Group, Problem, list_problems, problems_root
+from .problems import Group, Problem, list_problems, load_problem, problems_root  # noqa: F401 (load_problem: the doctest)
 from .sample_check import is_sample_group
 
 SOLUTIONS = Path(__file__).resolve().parent.parent / "solutions"
