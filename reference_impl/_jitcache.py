@@ -29,8 +29,9 @@ from pathlib import Path
 _PKG = Path(__file__).resolve().parent
 
 
-def _modules() -> dict[str, Path]:
-    """Dotted name below the package (``"mesh.kernel"``) -> source file, for every module."""
+def modules() -> dict[str, Path]:
+    """Dotted name below the package (``"mesh.kernel"``; ``"__init__"`` for the package itself,
+    ``"kit"`` for a subpackage's ``__init__``) -> source file, for every module."""
     out = {}
     for f in sorted(_PKG.rglob("*.py")):
         parts = f.relative_to(_PKG).with_suffix("").parts
@@ -65,7 +66,7 @@ def _imports(name: str, source: str, known: set[str]) -> set[str]:
 
 def dependencies() -> dict[str, set[str]]:
     """module -> the package modules it depends on, itself included (transitive closure)."""
-    files = _modules()
+    files = modules()
     known = set(files)
     direct = {m: _imports(m, f.read_text(encoding="utf-8"), known) for m, f in files.items()}
     closure = {}
@@ -97,7 +98,7 @@ def cache_dir_of(source: Path) -> Path | None:
 def purge_stale_cache() -> list[str]:
     """Drop cached numba code whose dependencies changed; return the modules dropped."""
     try:
-        files = _modules()
+        files = modules()
         dropped = []
         source: dict[str, bytes] = {}  # each file read once
         for mod, deps in dependencies().items():

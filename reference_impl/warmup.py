@@ -32,8 +32,6 @@ import numpy as np
 
 __all__ = ["FEATURES", "warm", "not_cached", "kernels"]
 
-_PKG = Path(__file__).resolve().parent
-
 
 def _delaunay() -> None:
     from reference_impl.mesh.delaunay import Delaunay
@@ -160,15 +158,16 @@ def warm(progress: Callable[[str], None] | None = print) -> dict[str, float]:
 def kernels() -> dict[str, object]:
     """Every numba dispatcher defined in the package: ``module.name`` -> dispatcher."""
     from numba.core.registry import CPUDispatcher
+
+    from reference_impl._jitcache import modules
     found = {}
-    for f in sorted(_PKG.rglob("*.py")):
-        parts = f.relative_to(_PKG).with_suffix("").parts
-        if parts[0] in ("__main__", "warmup", "kit") or parts[-1] == "__init__" or "__pycache__" in parts:
+    for name, f in modules().items():
+        if name.split(".")[0] in ("__main__", "warmup", "kit") or f.stem == "__init__":
             continue
-        mod = importlib.import_module(".".join((__package__, *parts)))
-        for name, obj in vars(mod).items():
+        mod = importlib.import_module(f"{__package__}.{name}")
+        for attr, obj in vars(mod).items():
             if isinstance(obj, CPUDispatcher) and obj.py_func.__module__ == mod.__name__:
-                found[f"{'.'.join(parts)}.{name}"] = obj
+                found[f"{name}.{attr}"] = obj
     return found
 
 

@@ -6,7 +6,7 @@ The data model is scipy's and Delaunator's: ``points`` (n, 2) float64,
 ``simplices`` (m, 3) point indices counter-clockwise, ``neighbors`` (m, 3) with
 ``neighbors[t, k]`` the triangle opposite vertex k (-1 on the hull), ``hull``
 the hull vertices counter-clockwise.  The kernel is in ``kernel.py``; the
-insertion order in ``ordering.py``; the exact predicates in ``predicates.py``.
+insertion order in ``ordering.py``; the exact predicates in ``exact/predicates.py``.
 
 Input rules: duplicates are merged (``index_map[i]`` is the index that point i
 was merged into: the smallest index with the same coordinates); all-collinear
@@ -17,7 +17,7 @@ input order, degenerate inputs included.
 
 Updates: ``insert(p)`` adds a point (its index is the next row of ``points``),
 ``remove(i)`` deletes point i in time proportional to its number of neighbours
-(Devillers' setting: delete the star, re-triangulate the hole; see ``kernel.py``).
+(Devillers' setting: delete the star, re-triangulate the hole; see ``removal.py``).
 Indices never change: ``points`` keeps every row, removed ones included, and a
 removed index appears in no output (``index_map[i] == -1``, ``live[i]`` False).
 After updates the triangulation is Delaunay for the live points; where
@@ -45,11 +45,9 @@ import numbers
 
 import numpy as np
 
-from reference_impl.mesh import kernel as _mesh
-
-from reference_impl.mesh import removal as _mesh_remove
-from reference_impl.mesh import status
+from reference_impl.mesh import kernel, removal, status
 from reference_impl.mesh.ordering import SMALL, insertion_order
+from reference_impl.mesh.topology import unique_edges, vertex_adjacency
 from reference_impl.validate import as_point, as_points, as_queries
 from reference_impl.exact.predicates import orient2d_nb
 
@@ -136,7 +134,7 @@ class Delaunay:
 
     def _alloc_triangles(self, ntris: int) -> None:
         self._cap_t = ntris
-        self._M = np.zeros(_mesh.RECORD * ntris, dtype=_ITYPE)   # the mesh: see _mesh.py
+        self._M = np.zeros(kernel.RECORD * ntris, dtype=_ITYPE)   # the mesh: see kernel.py
         self._stack = np.empty(ntris, dtype=_ITYPE)
         self._bad = np.empty(ntris, dtype=_ITYPE)
         self._ba = np.empty(ntris, dtype=_ITYPE)
@@ -144,7 +142,7 @@ class Delaunay:
         self._bo = np.empty(ntris, dtype=_ITYPE)
 
     def _build(self) -> None:
-        """Triangulate the live input points from scratch (one compiled call, ``_mesh.triangulate``)."""
+        """Triangulate the live input points from scratch (one compiled call, ``kernel.triangulate``)."""
         pts = self.points
         small = len(pts) - self._nremoved < SMALL     # small: the order is computed in the call,
         if self._nremoved:                            # and the triangles are extracted at once
@@ -153,7 +151,7 @@ class Delaunay:
         else:
             order = _NO_ORDER if small else insertion_order(pts)
         (self._flat, order, self._P, self._M, self._stack, self._bad, self._ba, self._bb, self._bo,
-         self._start_of, self._state, self._dup, self._w, simp, out_of, rep) = _mesh.triangulate(
+         self._start_of, self._state, self._dup, self._w, simp, out_of, rep) = kernel.triangulate(
             pts, order, small and not self._nremoved, small)
         self._cap_v, self._cap_t = len(self._P), len(self._stack)
         n = len(order)
@@ -188,9 +186,9 @@ class Delaunay:
     def _grow_triangles(self) -> None:
         """Double the room for triangles, keeping the mesh (used by ``insert``)."""
         old_M = self._M
-        nt = self._state[_mesh.S_NTRI]
+        nt = self._state[kernel.S_NTRI]
         self._alloc_triangles(2 * self._cap_t)
-        self._M[:_mesh.RECORD * nt] = old_M[:_mesh.RECORD * nt]
+        self._M[:kernel.RECORD * nt] = old_M[:kernel.RECORD * nt]
 
     def _append_point(self, q: np.ndarray) -> int:
         """Append an input row (amortised O(1)); return its index."""
@@ -216,14 +214,14 @@ class Delaunay:
         if not self._flat:
             cap = self._cap_v
             self._label = np.full(cap, -1, dtype=np.int64)
-            self._label[:n] = _mesh.smallest_labels(self._order[:n], self._dup[:n])
+            self._label[:n] = kernel.smallest_labels(self._order[:n], self._dup[:n])
             self._copies = {}                              # only sites with duplicates
             for u in np.flatnonzero(self._dup[:n] >= 0).tolist():
                 r = int(self._dup[u])
                 self._copies.setdefault(r, [r]).append(u)
             self._pos = np.empty(cap + 1, dtype=np.int64)
             self._free = []                                # internal ids no longer in use
-            _mesh_remove.init_vertex_map(self._M, int(self._state[_mesh.S_NTRI]), self._start_of)
+            removal.init_vertex_map(self._M, int(self._state[kernel.S_NTRI]), self._start_of)
         self._dyn = True
 
     # ------------------------------------------------------------------ results
@@ -239,8 +237,8 @@ class Delaunay:
                     rep = np.where(self._dead[:n], -1, labels[site])
                 else:
                     rep = labels = self._representatives()
-                nt = int(self._state[_mesh.S_NTRI])
-                simp, out_of = _mesh.extract(self._M, nt, labels)
+                nt = int(self._state[kernel.S_NTRI])
+                simp, out_of = kernel.extract(self._M, nt, labels)
                 self._cache.update(simplices=simp, out_of=out_of, rep=rep, labels=labels)
         return self._cache
 
@@ -248,11 +246,11 @@ class Delaunay:
         """neighbors and hull are computed on first use (building needs neither)."""
         cache = self._result()
         if key not in cache:
-            nt = int(self._state[_mesh.S_NTRI])
+            nt = int(self._state[kernel.S_NTRI])
             if key == "neighbors":
-                cache[key] = _mesh.extract_neighbors(self._M, nt, cache["out_of"], len(cache["simplices"]))
+                cache[key] = kernel.extract_neighbors(self._M, nt, cache["out_of"], len(cache["simplices"]))
             else:
-                cache[key] = _mesh.hull_cycle(self._M, nt, self._n, cache["labels"])
+                cache[key] = kernel.hull_cycle(self._M, nt, self._n, cache["labels"])
         return cache[key]
 
     def _flat_result(self) -> dict:
@@ -273,7 +271,7 @@ class Delaunay:
     def _representatives(self) -> np.ndarray:
         """rep[internal vertex] = smallest input index among the points equal to it."""
         order, dup = self._order[:self._n], self._dup[:self._n]
-        return _mesh.smallest_labels(order, dup) if (dup >= 0).any() else order
+        return kernel.smallest_labels(order, dup) if (dup >= 0).any() else order
 
     @property
     def points(self) -> np.ndarray:
@@ -316,20 +314,15 @@ class Delaunay:
         >>> Delaunay([(0, 0), (1, 0), (0, 1)]).edges().tolist()
         [[0, 1], [0, 2], [1, 2]]
         """
-        if self._flat:
+        if not self._flat:
+            e = unique_edges(self.simplices, self.neighbors)     # sorted, each edge once
+        else:
             chain = self.hull
             e = np.stack([chain[:-1], chain[1:]], axis=1) if len(chain) > 1 else np.zeros((0, 2), np.int64)
-        else:
-            # each undirected edge once: from the triangle with the larger index (or the
-            # only triangle, on the hull); the edge opposite vertex k is (k+1, k+2)
-            s, nb = self.simplices, self.neighbors
-            t = np.arange(len(s))[:, None]
-            keep = (nb < t) | (nb == -1)
-            e = np.stack([s[:, [1, 2, 0]][keep], s[:, [2, 0, 1]][keep]], axis=1)
-        e = np.sort(e, axis=1)
+            e = np.sort(e, axis=1)
+            e = e[np.lexsort((e[:, 1], e[:, 0]))]
         if len(e) == 0:
             return e.reshape(0, 2)
-        e = e[np.lexsort((e[:, 1], e[:, 0]))]
         return e[np.r_[True, (e[1:] != e[:-1]).any(axis=1)]]   # merged duplicates can repeat
 
     def vertex_neighbors(self, i: int, strict: bool = False) -> np.ndarray:
@@ -360,9 +353,9 @@ class Delaunay:
         u = int(self._internal[i])
         site = u if self._dup[u] < 0 else int(self._dup[u])
         if strict:
-            ring = _mesh_remove.strict_link(self._M, self._P, self._start_of, site, self._w)
+            ring = removal.strict_link(self._M, self._P, self._start_of, site, self._w)
         else:
-            ring = _mesh_remove.link(self._M, self._start_of, site)
+            ring = removal.link(self._M, self._start_of, site)
             ring = ring[ring >= 0]
         return np.sort(self._label[ring])
 
@@ -382,8 +375,8 @@ class Delaunay:
         if not self._flat and len(qs):
             # many queries: answer them along a Hilbert curve, so each walk starts next door
             order = insertion_order(qs, brio=False) if len(qs) > 64 else np.arange(len(qs))
-            found = _mesh.find(self._M, self._P, qs[order], int(self._state[_mesh.S_LAST]), self._w,
-                               np.zeros(_mesh.STATE_SIZE, dtype=np.int64))
+            found = kernel.find(self._M, self._P, qs[order], int(self._state[kernel.S_LAST]), self._w,
+                               np.zeros(kernel.STATE_SIZE, dtype=np.int64))
             res[order] = self._cache_out_of()[found]
         return int(res[0]) if shape == () else res.reshape(shape)
 
@@ -407,14 +400,9 @@ class Delaunay:
         """
         cache = self._result()
         if "vertex_neighbor_vertices" not in cache:
-            e = self.edges().astype(np.int64)
+            e = self.edges()
             n = self._npts
-            src = np.concatenate([e[:, 0], e[:, 1]])
-            dst = np.concatenate([e[:, 1], e[:, 0]])
-            order = np.lexsort((dst, src))
-            indptr = np.zeros(n + 1, dtype=np.int64)
-            np.cumsum(np.bincount(src, minlength=n), out=indptr[1:])
-            cache["vertex_neighbor_vertices"] = (indptr, dst[order])
+            cache["vertex_neighbor_vertices"] = vertex_adjacency(e[:, 0], e[:, 1], n, rank=np.arange(n))
         return cache["vertex_neighbor_vertices"]
 
     @property
@@ -498,7 +486,7 @@ class Delaunay:
             if self._dyn:
                 self._internal[idx] = u
             return idx
-        if self._state[_mesh.S_NTRI] + 2 > self._cap_t:
+        if self._state[kernel.S_NTRI] + 2 > self._cap_t:
             self._grow_triangles()
         if self._dyn and self._free:
             u = self._free.pop()          # the id of a vertex gone from the mesh
@@ -511,7 +499,7 @@ class Delaunay:
         self._P[u] = q
         self._order[u] = idx
         self._dead[u] = False
-        r = _mesh.insert(u, self._P, self._M,
+        r = kernel.insert(u, self._P, self._M,
                          self._stack, self._bad, self._ba, self._bb, self._bo,
                          self._start_of, self._state, self._w)
         self._dup[u] = r
@@ -520,7 +508,7 @@ class Delaunay:
             if r < 0:
                 # insert() keeps start_of right for the old vertices; the new one is in
                 # the last triangle it made
-                self._start_of[u + 1] = self._state[_mesh.S_LAST]
+                self._start_of[u + 1] = self._state[kernel.S_LAST]
                 self._label[u] = idx
             else:
                 self._copies.setdefault(int(r), [int(r)]).append(u)   # label: idx is the largest
@@ -530,7 +518,7 @@ class Delaunay:
         """Remove point i (an index into ``points``); the triangulation stays Delaunay.
 
         Cost: proportional to the number of Delaunay neighbours of the point (its star is
-        deleted and the hole re-triangulated, see ``kernel.py``); the first call also
+        deleted and the hole re-triangulated, see ``removal.py``); the first call also
         makes an O(n) index.  Indices of other points do not change.  Duplicates: each
         index is a point of its own; removing one copy of a location leaves the location
         in the triangulation, now named by the smallest remaining index, and the location
@@ -569,7 +557,7 @@ class Delaunay:
                 return
             del self._copies[site]
         self._free.append(site)
-        code = _mesh_remove.remove(site, self._P, self._M, self._stack, self._bad, self._ba, self._bb,
+        code = removal.remove(site, self._P, self._M, self._stack, self._bad, self._ba, self._bb,
                             self._bo, self._start_of, self._pos, self._state, self._w)
         if code != status.OK:
             if code == status.LOST:            # a sanity check failed: the mesh is untouched

@@ -41,11 +41,12 @@ Run the doctests:  python -m doctest reference_impl/structures/navmesh.py
 
 >>> room = [(0, 0), (10, 0), (10, 10), (0, 10)]
 >>> pillar = [(4, 4), (6, 4), (6, 6), (4, 6)]
->>> shortest_path(room, [pillar], (2, 5.5), (8, 5.5))
+>>> nav = NavMesh(room, [pillar])
+>>> nav.shortest_path((2, 5.5), (8, 5.5))
 [(2.0, 5.5), (4.0, 6.0), (6.0, 6.0), (8.0, 5.5)]
->>> shortest_path(room, [pillar], (2, 6), (8, 6))           # grazing the wall is allowed
+>>> nav.shortest_path((2, 6), (8, 6))           # grazing the wall is allowed
 [(2.0, 6.0), (8.0, 6.0)]
->>> shortest_path(room, [pillar], (5, 5), (8, 5)) is None     # start inside the pillar
+>>> nav.shortest_path((5, 5), (8, 5)) is None     # start inside the pillar
 True
 """
 from __future__ import annotations

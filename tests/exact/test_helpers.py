@@ -5,7 +5,7 @@ Covers ``reference_impl.exact.scaling`` (power-of-two scaling), the expansion he
 ``reference_impl.exact.distance`` (``sq_dist_cmp``, ``dot_sign``, ``length_order``) and the
 validators that moved into ``reference_impl.validate``.
 
-Run: python -m pytest tests/test_exact_helpers.py -q
+Run: python -m pytest tests/exact/test_helpers.py -q
 """
 from __future__ import annotations
 
