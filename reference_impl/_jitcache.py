@@ -103,13 +103,9 @@ def purge_stale_cache() -> list[str]:
         source: dict[str, bytes] = {}  # each file read once
         for mod, deps in dependencies().items():
             cache_dir = cache_dir_of(files[mod])
-            if cache_dir is None or not cache_dir.is_dir():
+            if cache_dir is None:
                 continue
             stem = files[mod].stem
-            cached = [f for f in cache_dir.iterdir()
-                      if f.suffix in (".nbi", ".nbc") and f.name.split(".")[0] == stem]
-            if not cached:
-                continue
             h = hashlib.sha1()
             for d in sorted(deps):
                 if d not in source:
@@ -119,10 +115,16 @@ def purge_stale_cache() -> list[str]:
             stamp = cache_dir / f"{stem}.deps.sha1"
             if stamp.exists() and stamp.read_text() == h.hexdigest():
                 continue
-            if stamp.exists():  # a dependency changed since these files were compiled
-                for f in cached:
-                    f.unlink()
+            # No stamp, or another one: whatever is cached was compiled against other sources
+            # (or unknown ones), so it goes.  A stamp is written even before anything is cached,
+            # so that code compiled after this call is known to match these sources.
+            cached = [f for f in cache_dir.iterdir()
+                      if f.suffix in (".nbi", ".nbc") and f.name.split(".")[0] == stem] if cache_dir.is_dir() else []
+            for f in cached:
+                f.unlink()
+            if cached:
                 dropped.append(mod)
+            cache_dir.mkdir(parents=True, exist_ok=True)
             stamp.write_text(h.hexdigest())
         return dropped
     except (OSError, ImportError, AttributeError, UnicodeDecodeError, SyntaxError):

@@ -67,6 +67,21 @@ def test_degenerate_sets_are_exactly_delaunay(impl, nmax, name, pts):
 
 
 @pytest.mark.parametrize("impl,nmax", IMPLS)
+def test_magnitudes_too_far_apart_for_expansions(impl, nmax):
+    """Points at 1e-200, 1 and 1e100 in one set: many in-circle and orientation tests span
+    more than 2**150, where the exact stage falls back to Python integers (the numba
+    ``objmode`` path, reached from the kernel's reference-count-free insertion loop)."""
+    rng = np.random.default_rng(7)
+    pts = np.vstack([rng.random((15, 2)) * 1e-200, rng.random((15, 2)), rng.random((15, 2)) * 1e100,
+                     [[0.0, 0.0], [-1e100, 1e-200], [1e-200, -1e100]]])
+    for order in (np.arange(len(pts)), rng.permutation(len(pts))):
+        tris = np.asarray(impl(pts[order]))
+        assert_delaunay(pts[order], tris)
+        ok, msg = brute_force_empty_circles(pts[order], tris)
+        assert ok, msg
+
+
+@pytest.mark.parametrize("impl,nmax", IMPLS)
 @pytest.mark.parametrize("name,pts", pointsets.flat_sets(), ids=lambda v: v if isinstance(v, str) else "")
 def test_flat_input_gives_no_triangles(impl, nmax, name, pts):
     tris = impl(pts)

@@ -44,6 +44,7 @@ from numba import njit
 
 from reference_impl.exact.expansion import (EPSILON, accumulate, add, certain_sign, diff, mul,
                                             negate, sign, sign_of, two_diff)
+from reference_impl.exact.coldcall import cold
 from reference_impl.exact.scaling import pow2_scale
 from reference_impl.exact.verify import exact_sign
 from reference_impl.validate import as_xy
@@ -87,7 +88,10 @@ def _small_integer(d, limit):
     return abs(d) < limit and d == math.floor(d)
 
 
-@njit(cache=True)
+# The exact stages slice their workspace and may box it for the Python fallback, so they keep
+# numba's reference counting even when a caller is compiled without it (``mesh/kernel.build``):
+# ``_nrt=True`` is set explicitly because numba otherwise inherits the caller's setting.
+@njit(cache=True, _nrt=True)
 def _orient_exact(ax, ay, bx, by, cx, cy, w):
     # Stage "integer": when the differences are exact small integers (integer grids), the
     # plain determinant has no rounding error at all (products < 2**52, sum < 2**53).
@@ -117,6 +121,9 @@ def _orient_exact(ax, ay, bx, by, cx, cy, w):
     return sign_of(h, add(p, np_, q, nq, h))
 
 
+_orient_exact_cold = cold(_orient_exact, 7)   # (coldcall.py: keeps the filter's path free of refcounting)
+
+
 @njit(cache=True, inline="always")
 def orient2d_nb(ax, ay, bx, by, cx, cy, w):
     """Exact orientation sign of (a, b, c); ``w`` is a ``workspace()`` array."""
@@ -129,11 +136,11 @@ def orient2d_nb(ax, ay, bx, by, cx, cy, w):
     s = certain_sign(det, detsum, detsum, _O_HI, _O_LO, CCW_ERRBOUND_A, 0.0)
     if s != 0:
         return s
-    return _orient_exact(ax, ay, bx, by, cx, cy, w)
+    return _orient_exact_cold(ax, ay, bx, by, cx, cy, w)
 
 
 # --------------------------------------------------------------------- incircle
-@njit(cache=True)
+@njit(cache=True, _nrt=True)
 def _incircle_exact(ax, ay, bx, by, cx, cy, dx, dy, w):
     # Stage "integer" (see _orient_exact): |differences| < 2**12 keeps every term of the
     # determinant below 2**50 and the sum below 2**53, so the plain formula is exact.
@@ -192,6 +199,9 @@ def _incircle_exact(ax, ay, bx, by, cx, cy, dx, dy, w):
     return sign_of(acc, nacc)
 
 
+_incircle_exact_cold = cold(_incircle_exact, 9)
+
+
 @njit(cache=True, inline="always")
 def incircle_nb(ax, ay, bx, by, cx, cy, dx, dy, w):
     """Exact sign of d relative to the circle through CCW a, b, c (+1 inside)."""
@@ -214,7 +224,7 @@ def incircle_nb(ax, ay, bx, by, cx, cy, dx, dy, w):
     s = certain_sign(det, permanent, dmax, _I_DMAX, _I_LO, ICC_ERRBOUND_A, 0.0)
     if s != 0:
         return s
-    return _incircle_exact(ax, ay, bx, by, cx, cy, dx, dy, w)
+    return _incircle_exact_cold(ax, ay, bx, by, cx, cy, dx, dy, w)
 
 
 # --------------------------------------------------------------------- python API

@@ -53,6 +53,7 @@ import numpy as np
 from numba import njit
 
 from reference_impl.exact.expansion import EPSILON, certain_sign
+from reference_impl.exact.coldcall import cold
 from reference_impl.exact.stages3d import (WORKSPACE3D_SIZE, exact_coordinates_3d, insphere_det_perm,
                                            insphere_exact, insphere_exact_stage, orient3d_det_perm,
                                            orient3d_exact, orient3d_exact_stage)
@@ -86,6 +87,11 @@ def workspace3d() -> np.ndarray:
     return np.empty(WORKSPACE3D_SIZE, dtype=np.float64)
 
 
+# the exact stages through coldcall.cold: no reference counting on the filters' path
+_orient3d_exact_cold = cold(orient3d_exact_stage, 13)
+_insphere_exact_cold = cold(insphere_exact_stage, 16)
+
+
 @njit(cache=True)
 def orient3d_nb(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz, w):
     """Exact orient3d sign (see the module docstring); ``w`` is a ``workspace3d()`` array."""
@@ -93,7 +99,7 @@ def orient3d_nb(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz, w):
     s = certain_sign(det, permanent, dmax, _O_DMAX, _O_PLO, O3D_ERRBOUND_A, _O_ABS)
     if s != 0:
         return s
-    return orient3d_exact_stage(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz, w)
+    return _orient3d_exact_cold(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz, w)
 
 
 @njit(cache=True)
@@ -104,7 +110,7 @@ def insphere_nb(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz, ex, ey, ez, w):
     s = certain_sign(det, permanent, dmax, _I_DMAX, _I_PLO, ISP_ERRBOUND_A, _I_ABS)
     if s != 0:
         return s
-    return insphere_exact_stage(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz, ex, ey, ez, w)
+    return _insphere_exact_cold(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz, ex, ey, ez, w)
 
 
 # --------------------------------------------------------------------- batch and python API

@@ -255,17 +255,17 @@ def test_editing_a_dependency_drops_the_dependants_cache(tmp_path):
         exact_dir, mesh_dir, dropped = out.stdout.strip().splitlines()[-3:]
         return Path(exact_dir), Path(mesh_dir), dropped
 
-    exact_dir, mesh_dir, _ = run()
+    exact_dir, mesh_dir, _ = run()                      # first sight, nothing cached: stamps written
     assert exact_dir != mesh_dir                        # one cache directory per source directory
+    assert (mesh_dir / "kernel.deps.sha1").exists()
     for d in (exact_dir, mesh_dir):
         d.mkdir(parents=True, exist_ok=True)
     files = [mesh_dir / "kernel.build-1.py311.nbi", exact_dir / "verify.x-1.py311.nbi",
              exact_dir / "predicates.orient2d_nb-1.py311.nbi"]
     for f in files:
         f.write_text("")
-    _, _, dropped = run()                                       # first sight: stamps written
-    assert dropped == "[]"
-    assert (mesh_dir / "kernel.deps.sha1").exists() and files[0].exists()
+    _, _, dropped = run()                                       # compiled after the stamps
+    assert dropped == "[]" and files[0].exists()
     _, _, dropped = run()                                       # nothing edited: nothing dropped
     assert dropped == "[]" and all(f.exists() for f in files)
     with open(pkg / "exact" / "expansion.py", "a") as f:
@@ -275,3 +275,7 @@ def test_editing_a_dependency_drops_the_dependants_cache(tmp_path):
     assert not files[0].exists()                                # mesh/kernel.py uses expansion.py
     assert not files[2].exists()
     assert files[1].exists()                                    # verify does not import expansion
+    (mesh_dir / "kernel.deps.sha1").unlink()                    # cached code of unknown sources
+    files[0].write_text("")
+    _, _, dropped = run()
+    assert dropped == "['mesh.kernel']" and not files[0].exists() and files[1].exists()
