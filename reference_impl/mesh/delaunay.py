@@ -147,12 +147,15 @@ class Delaunay:
         small = len(pts) - self._nremoved < SMALL     # small: the order is computed in the call,
         if self._nremoved:                            # and the triangles are extracted at once
             live = np.flatnonzero(~self._removed[:self._npts])
-            order = live[insertion_order(pts[live])]
+            order, hints = insertion_order(pts[live], with_hints=True)
+            order = live[order]
+        elif small:
+            order, hints = _NO_ORDER, _NO_ORDER
         else:
-            order = _NO_ORDER if small else insertion_order(pts)
+            order, hints = insertion_order(pts, with_hints=True)
         (self._flat, order, self._P, self._M, self._stack, self._bad, self._ba, self._bb, self._bo,
          self._start_of, self._state, self._dup, self._w, simp, out_of, rep) = kernel.triangulate(
-            pts, order, small and not self._nremoved, small)
+            pts, order, hints, small and not self._nremoved, small)
         self._cap_v, self._cap_t = len(self._P), len(self._stack)
         n = len(order)
         # internal vertex u = input point order[u]

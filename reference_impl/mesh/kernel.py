@@ -265,9 +265,14 @@ def seed(a, b, c, P, M, state, w):
 
 
 @njit(cache=True, _nrt=False)
-def build(P, M, stack, bad, ba, bb, bo, start_of, state, dup, w):
+def build(P, M, stack, bad, ba, bb, bo, start_of, state, dup, hints, w):
     """Triangulate vertices 0..n-1 in index order.  ``dup[i]`` receives the vertex that i
     duplicates (or -1).  Returns False when every point is collinear (nothing built).
+
+    ``hints[p]`` (``ordering.walk_hints``; -1 for none) is an earlier vertex near p: the walk
+    for p starts beside it when it is closer to p than the last inserted vertex is.  For that,
+    ``start_of[v + 1]`` holds a triangle incident to each inserted vertex v when v is done
+    (later cavities may destroy it; the walk starts correctly from any live triangle).
 
     Compiled without numba's reference counting (``_nrt=False``): every array the inlined
     helpers receive (``insert``, ``locate``, the predicates) would otherwise cost a pair of
@@ -296,26 +301,39 @@ def build(P, M, stack, bad, ba, bb, bo, start_of, state, dup, w):
     if i2 < 0:
         return False
     seed(0, i1, i2, P, M, state, w)
+    start_of[1] = start_of[i1 + 1] = start_of[i2 + 1] = 0      # the seed triangle
+    last = i2
     for p in range(1, n):
         if p == i1 or p == i2:
             continue
+        h = hints[p]
+        if h >= 0:
+            px = P[p, 0]
+            py = P[p, 1]
+            dh = (P[h, 0] - px) ** 2 + (P[h, 1] - py) ** 2
+            dl = (P[last, 0] - px) ** 2 + (P[last, 1] - py) ** 2
+            if dh < dl:
+                state[S_LAST] = start_of[h + 1]
         dup[p] = insert(p, P, M, stack, bad, ba, bb, bo, start_of, state, w)
+        start_of[p + 1] = state[S_LAST]     # incident to p (to its duplicate's star when dup)
+        last = p
     return True
 
 
 @njit(cache=True)
-def triangulate(pts, order, compute_order, extract_now):
+def triangulate(pts, order, hints, compute_order, extract_now):
     """All of ``Delaunay(points)`` in one compiled call (the fixed cost of many small calls
     from Python is larger than the work below a few thousand points).
 
-    ``pts``: (n, 2) validated input; ``order``: the insertion order (indices into ``pts``;
-    with ``compute_order`` it is computed here instead, by ``ordering.small_order``).  Allocates the mesh for ``pts[order]`` and
-    builds it; with ``extract_now`` also the output triangles.  Returns ``(flat, order, P, M,
+    ``pts``: (n, 2) validated input; ``order``, ``hints``: the insertion order (indices into
+    ``pts``) and its walk hints (``ordering.insertion_order(..., with_hints=True)``); with
+    ``compute_order`` both are computed here instead, by ``ordering.small_order``.  Allocates
+    the mesh for ``pts[order]`` and builds it; with ``extract_now`` also the output triangles.  Returns ``(flat, order, P, M,
     stack, bad, ba, bb, bo, start_of, state, dup, w, simplices, out_of, rep)``; ``flat`` is
     True when nothing was built (fewer than three points, or all collinear), and
     ``simplices``/``out_of``/``rep`` are empty unless extracted."""
     if compute_order:
-        order = small_order(pts[:, 0].copy(), pts[:, 1].copy(), True)
+        order, hints = small_order(pts[:, 0].copy(), pts[:, 1].copy(), True)
     n = order.shape[0]
     nv = max(n, 4)
     nt = 2 * n + 8
@@ -333,7 +351,7 @@ def triangulate(pts, order, compute_order, extract_now):
     state = np.zeros(STATE_SIZE, dtype=np.int64)
     dup = np.full(nv, -1, dtype=np.int64)
     w = np.empty(WORKSPACE_SIZE)
-    flat = n < 3 or not build(P[:n], M, stack, bad, ba, bb, bo, start_of, state, dup, w)
+    flat = n < 3 or not build(P[:n], M, stack, bad, ba, bb, bo, start_of, state, dup, hints, w)
     if flat:
         dup[:] = -1                  # (flat results are computed from the coordinates)
     simp = np.empty((0, 3), dtype=np.int64)
