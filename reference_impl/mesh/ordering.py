@@ -35,15 +35,44 @@ _DIG = np.array([0, 1, 3, 2, 0, 3, 1, 2, 2, 1, 3, 0, 2, 3, 1, 0], dtype=np.int64
 _NXT = np.array([1, 0, 2, 0, 0, 3, 1, 1, 2, 2, 0, 3, 3, 1, 3, 2], dtype=np.int64)
 
 
+def _four_levels():
+    """The machine above run four levels at a time: for state s and 4-bit chunks xn, yn of the
+    cell's coordinates, ``_DIG4[256 s + 16 xn + yn]`` is the next 8 bits of the index and
+    ``_NXT4[...]`` the state after them (a quarter of the loop iterations)."""
+    dig4 = np.empty(1024, dtype=np.int64)
+    nxt4 = np.empty(1024, dtype=np.int64)
+    for s0 in range(4):
+        for xn in range(16):
+            for yn in range(16):
+                d, st = 0, s0
+                for lvl in range(3, -1, -1):
+                    q = (((xn >> lvl) & 1) << 1) | ((yn >> lvl) & 1)
+                    d = (d << 2) | int(_DIG[4 * st + q])
+                    st = int(_NXT[4 * st + q])
+                dig4[256 * s0 + 16 * xn + yn] = d
+                nxt4[256 * s0 + 16 * xn + yn] = st
+    return dig4, nxt4
+
+
+_DIG4, _NXT4 = _four_levels()
+
+
 @njit(cache=True)
 def hilbert_index(ix, iy, bits):
     """Position of the cell (ix, iy) along a Hilbert curve over a 2**bits grid."""
     d = 0
     s = 0
-    for lvl in range(bits - 1, -1, -1):
+    lvl = bits - 1
+    while (lvl + 1) % 4 != 0:          # single levels until a multiple of four is left
         q = (((ix >> lvl) & 1) << 1) | ((iy >> lvl) & 1)
         d = (d << 2) | _DIG[4 * s + q]
         s = _NXT[4 * s + q]
+        lvl -= 1
+    while lvl >= 0:                    # then four levels per table look-up
+        c = 256 * s + (((ix >> (lvl - 3)) & 15) << 4) + ((iy >> (lvl - 3)) & 15)
+        d = (d << 8) | _DIG4[c]
+        s = _NXT4[c]
+        lvl -= 4
     return d
 
 
@@ -76,13 +105,14 @@ def _keys(x, y, xbits, ybits, xmin, ymin, inv, bits, rounds):
 
 
 @njit(cache=True)
-def _fix_ties(order, keys, x, y):
-    # equal keys (same round, cell and hash bits): order them by coordinates
+def _fix_ties(order, skeys, x, y):
+    # equal keys (same round, cell and hash bits): order them by coordinates.  ``skeys`` are
+    # the keys in ``order`` (sorted), so finding the runs reads memory in sequence.
     n = order.shape[0]
     i = 0
     while i < n:
         j = i + 1
-        while j < n and keys[order[j]] == keys[order[i]]:
+        while j < n and skeys[j] == skeys[i]:
             j += 1
         for a in range(i + 1, j):  # insertion sort; runs are tiny
             v = order[a]
@@ -130,14 +160,16 @@ def small_order(x, y, brio):
     For small inputs the fixed cost of several calls from Python is larger than the work."""
     keys = _order_keys(x, y, brio)
     order = np.argsort(keys)
-    _fix_ties(order, keys, x, y)
-    return order, walk_hints(keys, order)
+    skeys = keys[order]
+    _fix_ties(order, skeys, x, y)
+    return order, walk_hints(skeys)
 
 
 @njit(cache=True)
-def walk_hints(keys, order):
-    """For each insertion position i, a position ``hints[i] < i`` of the previous BRIO round
-    whose Hilbert index is nearest to that of point i (-1 in the first round).
+def walk_hints(skeys):
+    """For the sort keys in insertion order (``skeys``: sorted by round, then Hilbert index),
+    for each position i a position ``hints[i] < i`` of the previous BRIO round whose Hilbert
+    index is nearest to that of point i (-1 in the first round).
 
     Why: point location walks from the last inserted point, which is usually next door: but
     where the Hilbert curve leaves the data and comes back (it does so all along a nearly
@@ -147,29 +179,27 @@ def walk_hints(keys, order):
     Hilbert index is nearby in the plane, so the kernel starts from whichever of the two is
     closer.  Linear time: each round is merged with the one before (both sorted by index).
     """
-    n = order.shape[0]
+    n = skeys.shape[0]
     hints = np.full(n, -1, dtype=np.int64)
-    hil = np.uint64(0xFFFFFFFF)
+    rnd = skeys >> 58
+    hil = (skeys >> 26) & 0xFFFFFFFF
     prev_lo = -1          # the previous round occupies positions prev_lo .. prev_hi - 1
     prev_hi = -1
     lo = 0
     while lo < n:
-        rnd = keys[order[lo]] >> 58
         hi = lo
-        while hi < n and keys[order[hi]] >> 58 == rnd:
+        while hi < n and rnd[hi] == rnd[lo]:
             hi += 1
         if prev_lo >= 0:
             j = prev_lo
             for i in range(lo, hi):
-                h = (np.uint64(keys[order[i]]) >> np.uint64(26)) & hil
+                h = hil[i]
                 # advance j to the last position of the previous round with index <= h
-                while j + 1 < prev_hi and (np.uint64(keys[order[j + 1]]) >> np.uint64(26)) & hil <= h:
+                while j + 1 < prev_hi and hil[j + 1] <= h:
                     j += 1
                 best = j
-                below = (np.uint64(keys[order[j]]) >> np.uint64(26)) & hil
-                if below <= h and j + 1 < prev_hi:    # (below > h: nothing of the round is below)
-                    above = (np.uint64(keys[order[j + 1]]) >> np.uint64(26)) & hil
-                    if above - h < h - below:
+                if hil[j] <= h and j + 1 < prev_hi:    # (hil[j] > h: nothing of the round is below)
+                    if hil[j + 1] - h < h - hil[j]:
                         best = j + 1
                 hints[i] = best
         prev_lo = lo
@@ -199,6 +229,7 @@ def insertion_order(points: np.ndarray, brio: bool = True, with_hints: bool = Fa
     else:
         keys = _order_keys(x, y, brio)
         order = np.argsort(keys, kind="quicksort")
-        _fix_ties(order, keys, x, y)
-        hints = walk_hints(keys, order) if with_hints else None
+        skeys = keys[order]
+        _fix_ties(order, skeys, x, y)
+        hints = walk_hints(skeys) if with_hints else None
     return (order, hints) if with_hints else order
