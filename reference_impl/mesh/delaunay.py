@@ -49,7 +49,7 @@ from reference_impl.mesh import kernel, removal, status
 from reference_impl.mesh.ordering import SMALL, insertion_order
 from reference_impl.mesh.topology import unique_edges, vertex_adjacency
 from reference_impl.validate import as_point, as_points, as_queries
-from reference_impl.exact.predicates import orient2d_nb
+from reference_impl.exact.predicates import orient2d_nb, workspace
 
 __all__ = ["Delaunay", "as_delaunay", "live_points"]
 
@@ -135,11 +135,20 @@ class Delaunay:
     def _alloc_triangles(self, ntris: int) -> None:
         self._cap_t = ntris
         self._M = np.zeros(kernel.RECORD * ntris, dtype=_ITYPE)   # the mesh: see kernel.py
-        self._stack = np.empty(ntris, dtype=_ITYPE)
-        self._bad = np.empty(ntris, dtype=_ITYPE)
-        self._ba = np.empty(ntris, dtype=_ITYPE)
-        self._bb = np.empty(ntris, dtype=_ITYPE)
-        self._bo = np.empty(ntris, dtype=_ITYPE)
+
+    def _cavity_scratch(self) -> tuple:
+        """``(stack, bad, ba, bb, bo)``: the scratch of ``insert`` and ``remove``, as long as
+        the triangle capacity, made on first use (a plain build does not need them)."""
+        if self._scratch is None or len(self._scratch[0]) != self._cap_t:
+            self._scratch = tuple(np.empty(self._cap_t, dtype=_ITYPE) for _ in range(5))
+        return self._scratch
+
+    @property
+    def _w(self) -> np.ndarray:
+        """The exact predicates' workspace, made on first use."""
+        if self._work is None:
+            self._work = workspace()
+        return self._work
 
     def _build(self) -> None:
         """Triangulate the live input points from scratch (one compiled call, ``kernel.triangulate``)."""
@@ -153,10 +162,10 @@ class Delaunay:
             order, hints = _NO_ORDER, _NO_ORDER
         else:
             order, hints = insertion_order(pts, with_hints=True)
-        (self._flat, order, self._P, self._M, self._stack, self._bad, self._ba, self._bb, self._bo,
-         self._start_of, self._state, self._dup, self._w, simp, out_of, rep) = kernel.triangulate(
-            pts, order, hints, small and not self._nremoved, small)
-        self._cap_v, self._cap_t = len(self._P), len(self._stack)
+        (self._flat, order, self._P, self._M, self._start_of, self._state, self._dup,
+         simp, out_of, rep) = kernel.triangulate(pts, order, hints, small and not self._nremoved, small)
+        self._cap_v, self._cap_t = len(self._P), len(self._M) // kernel.RECORD
+        self._scratch = self._work = None
         n = len(order)
         # internal vertex u = input point order[u]
         self._order = order if n >= 4 else _grown(order, 4, -1)
@@ -502,9 +511,7 @@ class Delaunay:
         self._P[u] = q
         self._order[u] = idx
         self._dead[u] = False
-        r = kernel.insert(u, self._P, self._M,
-                         self._stack, self._bad, self._ba, self._bb, self._bo,
-                         self._start_of, self._state, self._w)
+        r = kernel.insert(u, self._P, self._M, *self._cavity_scratch(), self._start_of, self._state, self._w)
         self._dup[u] = r
         if self._dyn:
             self._internal[idx] = u
@@ -560,8 +567,8 @@ class Delaunay:
                 return
             del self._copies[site]
         self._free.append(site)
-        code = removal.remove(site, self._P, self._M, self._stack, self._bad, self._ba, self._bb,
-                            self._bo, self._start_of, self._pos, self._state, self._w)
+        code = removal.remove(site, self._P, self._M, *self._cavity_scratch(), self._start_of, self._pos,
+                              self._state, self._w)
         if code != status.OK:
             if code == status.LOST:            # a sanity check failed: the mesh is untouched
                 type(self).fallbacks += 1
