@@ -1,10 +1,10 @@
 """Benchmark: reference_impl.Delaunay against Triangle and scipy.spatial in the same process.
 
-    python benchmarks/bench_delaunay.py            # full table (about 5 minutes)
+    python benchmarks/bench_delaunay.py            # full table (about 12 minutes)
     python benchmarks/bench_delaunay.py --quick    # 1e2 .. 1e5 uniform only, no start-up checks
     python benchmarks/bench_delaunay.py --sizes 1000000 10000000 --repeat 3
 
-Prints, for uniform random points in the unit square (1e2 .. 1e6 by default), 300
+Prints, for uniform random points in the unit square (1e2 .. 1e7 by default), 300
 Gaussian clusters (sigma 1e-3), the 1000x1000 integer grid (every square cocircular)
 and nearly collinear points (a line with 1e-9 noise), the best-of-k wall time of
 
@@ -15,8 +15,8 @@ and nearly collinear points (a line with 1e-9 noise), the best-of-k wall time of
 and the ratios ours/Triangle and ours/scipy (below 1.0 means we are faster).
 Ours and Triangle run alternately (ours, Triangle, ours, ...) so that machine
 noise hits both alike; scipy runs after them (once from 1e6 points on, where it
-takes ~15 s).  Then, each in a fresh subprocess: peak resident memory
-for 1e6 points, and the numba start-up cost: a cold compile of every kernel
+takes ~15 s; not at all from 2e6 on).  From 1e7 points on each runs once.  Then, each in
+a fresh subprocess: peak resident memory for 1e6 and 1e7 points, and the numba start-up cost: a cold compile of every kernel
 (``python -m reference_impl warm`` into an empty cache), then the first
 ``Delaunay`` of 1000 points in a new process after that warm-up (import included).
 """
@@ -147,7 +147,8 @@ def main() -> None:
     ap.add_argument("--no-scipy-at", type=int, default=2_000_000,
                     help="skip scipy from this size on (it takes ~15 s at 1e6)")
     args = ap.parse_args()
-    sizes = args.sizes or ([100, 1_000, 10_000, 100_000] if args.quick else [100, 1_000, 10_000, 100_000, 1_000_000])
+    sizes = args.sizes or ([100, 1_000, 10_000, 100_000] if args.quick
+                           else [100, 1_000, 10_000, 100_000, 1_000_000, 10_000_000])
     kinds = args.kinds or (["uniform"] if args.quick else ["uniform", "clusters", "grid", "near-line"])
 
     _ours(np.random.default_rng(1).random((100, 2)))  # compile (or load the cache) before timing
@@ -157,16 +158,18 @@ def main() -> None:
     for kind in kinds:
         for n in sizes:
             pts = inputs(n, np.random.default_rng(n))[kind]
-            repeat = args.repeat if n < 1_000_000 else min(args.repeat, 3)
+            repeat = args.repeat if n < 1_000_000 else min(args.repeat, 3 if n < 10_000_000 else 1)
             repeat = repeat * 20 if n <= 1_000 else repeat          # tiny inputs: more runs, less noise
             best, count = best_times(pts, repeat, with_scipy=kind == "uniform" and n < args.no_scipy_at)
             print(fmt_row(f"{kind} {len(pts):,}", best, count), flush=True)
     if not args.quick:
         print("  (scipy runs on uniform input only: Qhull needs joggling ('QJ') or merges facets on the others)")
     if not (args.quick or args.no_startup):
-        print("\npeak resident memory, 1e6 uniform points (MiB above the process's baseline):")
-        for which in ("ours", "triangle", "scipy"):
-            print(f"  {which:<9} {_sub(MEM_CODE, which, '1000000'):8.1f}")
+        print("\npeak resident memory, uniform points (MiB above the process's baseline):")
+        for n in (1_000_000, 10_000_000):
+            cells = [f"{which} {_sub(MEM_CODE, which, str(n)):8.1f}"
+                     for which in ("ours", "triangle") + (("scipy",) if n < args.no_scipy_at else ())]
+            print(f"  {n:>10,}: " + "   ".join(cells))
 
         with tempfile.TemporaryDirectory() as cache:
             env = dict(os.environ, NUMBA_CACHE_DIR=cache, PYTHONPATH=str(ROOT))

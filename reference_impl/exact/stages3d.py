@@ -438,7 +438,10 @@ def _exact_stages(w, nrows, bits, exact_min, bound_b, bound_c):
     return sgn
 
 
-@njit(cache=True)
+# _nrt=True: these slice and may box their workspace, so they keep numba's reference counting
+# even when called from a kernel compiled without it (``mesh/kernel3d.build``; numba would
+# otherwise inherit the caller's setting).
+@njit(cache=True, _nrt=True)
 def orient3d_exact_stage(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz, w):
     """orient3d's sign by the exact stages (after an inconclusive filter)."""
     v = w[_V:_V + 12]
@@ -447,7 +450,7 @@ def orient3d_exact_stage(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz, w):
     return _exact_stages(w, 3, 16, _O_EXACT_MIN, O3D_ERRBOUND_B, O3D_ERRBOUND_C)
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=True)
 def insphere_exact_stage(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz, ex, ey, ez, w):
     """insphere's sign by the exact stages (after an inconclusive filter)."""
     v = w[_V:_V + 15]

@@ -366,26 +366,22 @@ def _spanning(X, Y, Z, w):
     """With vertex 0, the first vertices that span space: i1, the first point other than
     vertex 0; i2, the first after i1 off the line (0, i1); i3, the first after i2 off the
     plane (0, i1, i2).  Those not found are -1 (then the points are coplanar)."""
-    found = np.full(3, -1, dtype=np.int64)
-    rank = 0
+    i1 = i2 = i3 = -1                   # (no array: build, the caller, allocates nothing)
     for i in range(1, X.shape[0]):
-        if rank == 0:
-            new = X[i] != X[0] or Y[i] != Y[0] or Z[i] != Z[0]
-        elif rank == 1:
-            new = not _collinear(0, found[0], i, X, Y, Z, w)
-        else:
-            a, b = found[0], found[1]
-            new = orient3d_nb(X[0], Y[0], Z[0], X[a], Y[a], Z[a], X[b], Y[b], Z[b],
-                              X[i], Y[i], Z[i], w) != 0
-        if new:
-            found[rank] = i
-            rank += 1
-            if rank == 3:
-                break
-    return found[0], found[1], found[2]
+        if i1 < 0:
+            if X[i] != X[0] or Y[i] != Y[0] or Z[i] != Z[0]:
+                i1 = i
+        elif i2 < 0:
+            if not _collinear(0, i1, i, X, Y, Z, w):
+                i2 = i
+        elif orient3d_nb(X[0], Y[0], Z[0], X[i1], Y[i1], Z[i1], X[i2], Y[i2], Z[i2],
+                         X[i], Y[i], Z[i], w) != 0:
+            i3 = i
+            break
+    return i1, i2, i3
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False)
 def build(X, Y, Z, tet, nbr, mark, free, stack, bad, bf, bo, bj,
           vst, vhead, enext, eto, etet, eface, state, dup, w):
     """Tetrahedralise vertices 0..n-1 in index order, resuming at ``state[S_NEXT]``.
@@ -393,6 +389,9 @@ def build(X, Y, Z, tet, nbr, mark, free, stack, bad, bf, bo, bj,
     ``dup[i]`` receives the vertex that i duplicates (or -1).  Returns FLAT when
     all points are coplanar (nothing built), OK, or GROW when the arrays must be
     enlarged (see ``state[S_NEED]``) before calling again.
+
+    Compiled without numba's reference counting, as the 2D ``kernel.build`` is (its
+    docstring says why and what keeps it safe: nothing compiled into it allocates).
     """
     n = X.shape[0]
     if state[S_NEXT] == 0:
