@@ -65,7 +65,7 @@ def ray_ahead(ax, ay, qx, qy, x, y):
     return (y > ay) == (qy > ay) and y != ay
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def fan_search(tri, nbr, vt, X, Y, a, qx, qy, qv, w):
     """Where does the ray from vertex ``a`` towards point q leave ``a``?
 
@@ -116,7 +116,7 @@ def fan_search(tri, nbr, vt, X, Y, a, qx, qy, qv, w):
         t = nx
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _flip(tri, nbr, cid, vt, t, k):
     """``topology.flip`` of the edge opposite slot k of t, carrying the constraint ids and ``vt``.
 
@@ -137,35 +137,49 @@ def _flip(tri, nbr, cid, vt, t, k):
     vt[tri[o, 1]] = o
 
 
-@njit(cache=True)
-def _legalize(tri, nbr, cid, vt, X, Y, w, stack, top):
-    """Lawson flips until every non-constraint edge in ``stack[:top]`` (vertex pairs) is locally Delaunay."""
+@njit(cache=True, inline="always")
+def _push(stack, mark, top, t):
+    """Push triangle t on the legalization stack unless it is there already; the new top."""
+    if mark[t] == 0:
+        mark[t] = 1
+        stack[top] = t
+        top += 1
+    return top
+
+
+@njit(cache=True, inline="always")
+def _legalize(tri, nbr, cid, vt, X, Y, w, stack, mark, top):
+    """Lawson flips until no triangle in ``stack[:top]`` has a non-constraint edge that is not
+    locally Delaunay.
+
+    The stack holds triangle ids, each at most once (``mark[t] == 1`` while t is in it; all
+    marks are 0 again on return), so it never holds more than the m triangles.  A flip
+    changes only the two triangles it rewrites (their ids stay), and every edge whose two
+    sides changed is an edge of one of them, so pushing both keeps the invariant: every
+    triangle with an edge that may be illegal is on the stack.
+    """
     while top > 0:
         top -= 1
-        u = stack[top, 0]
-        v = stack[top, 1]
-        t, k = find_edge(tri, nbr, vt, u, v)
-        if t < 0 or cid[t, k] >= 0 or nbr[t, k] < 0:
-            continue
-        o = nbr[t, k]
-        q = tri[o, third(tri, o, u, v)]
-        a, b, c = tri[t, 0], tri[t, 1], tri[t, 2]
-        if incircle_nb(X[a], Y[a], X[b], Y[b], X[c], Y[c], X[q], Y[q], w) > 0:
-            p = tri[t, k]
-            _flip(tri, nbr, cid, vt, t, k)
-            if top + 4 > stack.shape[0]:
-                bigger = np.empty((2 * stack.shape[0], 2), np.int64)
-                bigger[:top] = stack[:top]
-                stack = bigger
-            stack[top, 0], stack[top, 1] = p, u
-            stack[top + 1, 0], stack[top + 1, 1] = u, q
-            stack[top + 2, 0], stack[top + 2, 1] = q, v
-            stack[top + 3, 0], stack[top + 3, 1] = v, p
-            top += 4
+        t = stack[top]
+        mark[t] = 0
+        a = tri[t, 0]
+        b = tri[t, 1]
+        c = tri[t, 2]
+        for k in range(3):
+            o = nbr[t, k]
+            if o < 0 or cid[t, k] >= 0:
+                continue
+            q = tri[o, slot(nbr, o, t)]
+            if incircle_nb(X[a], Y[a], X[b], Y[b], X[c], Y[c], X[q], Y[q], w) > 0:
+                _flip(tri, nbr, cid, vt, t, k)
+                top = _push(stack, mark, top, t)
+                top = _push(stack, mark, top, o)
+                break
+    return top
 
 
-@njit(cache=True)
-def _insert_segment(s, a, b, tri, nbr, cid, vt, X, Y, w, through, err, queue, touched, stack):
+@njit(cache=True, inline="always")
+def _insert_segment(s, a, b, tri, nbr, cid, vt, X, Y, w, through, err, queue, touched, stack, mark):
     """Insert constraint segment number s from vertex a to vertex b.  False on error (see err).
 
     Sloan's method: collect the edges crossed by the segment, flip each one whose
@@ -271,16 +285,30 @@ def _insert_segment(s, a, b, tri, nbr, cid, vt, X, Y, w, through, err, queue, to
         cid[t, k] = s
         o = nbr[t, k]
         cid[o, third(tri, o, a, e)] = s
-        # --- restore the constrained Delaunay property in the touched triangles
+        # --- restore the constrained Delaunay property in the touched triangles (flips keep
+        # triangle ids, so the crossed triangles' ids are exactly the retriangulated region)
         top = 0
         for i in range(nt):
-            t = touched[i]
-            for k in range(3):
-                stack[top, 0] = tri[t, (k + 1) % 3]
-                stack[top, 1] = tri[t, (k + 2) % 3]
-                top += 1
-        _legalize(tri, nbr, cid, vt, X, Y, w, stack, top)
+            top = _push(stack, mark, top, touched[i])
+        _legalize(tri, nbr, cid, vt, X, Y, w, stack, mark, top)
         a = e
+    return True
+
+
+@njit(cache=True, _nrt=False)
+def _insert_all(tri, nbr, cid, vt, X, Y, seg, through, err, w, queue, touched, stack, mark):
+    """``insert_segments`` on scratch arrays from the caller: ``queue`` (m + 3, 2), ``touched``
+    and ``stack`` (m + 3,), ``mark`` (m,) all zero.
+
+    Compiled without numba's reference counting (as ``mesh/kernel.build``): the helpers are
+    inlined, and each array they receive would otherwise cost an atomic incref/decref pair per
+    call.  Nothing compiled in here may allocate an array; the exact stages of the predicates
+    carry reference counting of their own."""
+    for s in range(seg.shape[0]):
+        if not _insert_segment(s, seg[s, 0], seg[s, 1], tri, nbr, cid, vt, X, Y, w, through, err,
+                               queue, touched, stack, mark):
+            err[1] = s
+            return False
     return True
 
 
@@ -305,14 +333,10 @@ def insert_segments(tri, nbr, cid, vt, X, Y, seg, through, err, w):
     """
     cap = tri.shape[0] + 3
     queue = np.empty((cap, 2), np.int64)       # crossing edges (at most one per triangle)
-    touched = np.empty(cap, np.int64)
-    stack = np.empty((3 * cap + 16, 2), np.int64)
-    for s in range(seg.shape[0]):
-        if not _insert_segment(s, seg[s, 0], seg[s, 1], tri, nbr, cid, vt, X, Y, w, through, err,
-                               queue, touched, stack):
-            err[1] = s
-            return False
-    return True
+    touched = np.empty(cap, np.int64)          # the triangles crossed by one piece of a segment
+    stack = np.empty(cap, np.int64)            # legalization: each triangle at most once
+    mark = np.zeros(cap, np.int8)
+    return _insert_all(tri, nbr, cid, vt, X, Y, seg, through, err, w, queue, touched, stack, mark)
 
 
 
