@@ -140,7 +140,7 @@ def bench_paths(repeat, queries):
     NavMesh(boundary, holes).shortest_path(starts[0], goals[0])
     print(f"one call NavMesh(boundary, holes).shortest_path(start, goal): {time.perf_counter() - t:.3f} s")
 
-    sys.path.insert(0, str(ROOT / "tests" / "geometry"))
+    sys.path[:0] = [str(ROOT / "tests" / "structures"), str(ROOT / "tests")]
     from test_navmesh import oracle_length                        # the test oracle
     small_b, small_h = star(rng, 100, rmin=0.85), holes[::10]
     nav_small = NavMesh(small_b, small_h)

@@ -59,7 +59,10 @@ def third(tri, t, u, v):
 
 
 # ----------------------------------------------------------------------------- compiled: edges
-@njit(cache=True)
+# find_edge and flip are inlined into their callers like slot and third: a kernel compiled
+# without reference counting (``constrained._insert_all``) then gets their code compiled the
+# same way, instead of whichever version of a shared callee was compiled first.
+@njit(cache=True, inline="always")
 def find_edge(tri, nbr, vt, u, v):
     """A triangle t having edge (u, v) and the slot of its third vertex; (-1, -1) if absent.
 
@@ -89,7 +92,7 @@ def find_edge(tri, nbr, vt, u, v):
         t = nx
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def flip(tri, nbr, t, k):
     """Flip the edge opposite vertex k of triangle t (in place); return (u, v), the removed edge.
 

@@ -52,7 +52,7 @@ from reference_impl.validate import as_index_rows
 from reference_impl.exact.predicates import incircle_nb, orient2d_nb, workspace
 
 __all__ = ["ConstrainedDelaunay", "constrained_delaunay", "ConstrainedMesh", "constrain_delaunay",
-           "fan_search", "insert_segments", "orient_many", "ray_ahead", "format_point"]
+           "fan_search", "insert_segments", "canonical_segments", "orient_many", "ray_ahead", "format_point"]
 
 
 
@@ -65,7 +65,7 @@ def ray_ahead(ax, ay, qx, qy, x, y):
     return (y > ay) == (qy > ay) and y != ay
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def fan_search(tri, nbr, vt, X, Y, a, qx, qy, qv, w):
     """Where does the ray from vertex ``a`` towards point q leave ``a``?
 
@@ -116,7 +116,7 @@ def fan_search(tri, nbr, vt, X, Y, a, qx, qy, qv, w):
         t = nx
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _flip(tri, nbr, cid, vt, t, k):
     """``topology.flip`` of the edge opposite slot k of t, carrying the constraint ids and ``vt``.
 
@@ -137,36 +137,51 @@ def _flip(tri, nbr, cid, vt, t, k):
     vt[tri[o, 1]] = o
 
 
-@njit(cache=True)
-def _legalize(tri, nbr, cid, vt, X, Y, w, stack, top):
-    """Lawson flips until every non-constraint edge in ``stack[:top]`` (vertex pairs) is locally Delaunay."""
+@njit(cache=True, inline="always")
+def _push(stack, mark, top, t):
+    """Push triangle t on the legalization stack unless it is there already; the new top."""
+    if mark[t] == 0:
+        mark[t] = 1
+        stack[top] = t
+        top += 1
+    return top
+
+
+@njit(cache=True, inline="always")
+def _legalize(tri, nbr, cid, vt, X, Y, w, stack, mark, top):
+    """Lawson flips until no triangle in ``stack[:top]`` has a non-constraint edge that is not
+    locally Delaunay.
+
+    The stack holds triangle ids, each at most once (``mark[t] == 1`` while t is in it; all
+    marks are 0 again on return), so it never holds more than the m triangles.  A flip
+    changes only the two triangles it rewrites (their ids stay), and every edge whose two
+    sides changed is an edge of one of them, so pushing both keeps the invariant: every
+    triangle with an edge that may be illegal is on the stack.
+    """
     while top > 0:
         top -= 1
-        u = stack[top, 0]
-        v = stack[top, 1]
-        t, k = find_edge(tri, nbr, vt, u, v)
-        if t < 0 or cid[t, k] >= 0 or nbr[t, k] < 0:
-            continue
-        o = nbr[t, k]
-        q = tri[o, third(tri, o, u, v)]
-        a, b, c = tri[t, 0], tri[t, 1], tri[t, 2]
-        if incircle_nb(X[a], Y[a], X[b], Y[b], X[c], Y[c], X[q], Y[q], w) > 0:
-            p = tri[t, k]
-            _flip(tri, nbr, cid, vt, t, k)
-            if top + 4 > stack.shape[0]:
-                bigger = np.empty((2 * stack.shape[0], 2), np.int64)
-                bigger[:top] = stack[:top]
-                stack = bigger
-            stack[top, 0], stack[top, 1] = p, u
-            stack[top + 1, 0], stack[top + 1, 1] = u, q
-            stack[top + 2, 0], stack[top + 2, 1] = q, v
-            stack[top + 3, 0], stack[top + 3, 1] = v, p
-            top += 4
+        t = stack[top]
+        mark[t] = 0
+        a = tri[t, 0]
+        b = tri[t, 1]
+        c = tri[t, 2]
+        for k in range(3):
+            o = nbr[t, k]
+            if o < 0 or cid[t, k] >= 0:
+                continue
+            q = tri[o, slot(nbr, o, t)]
+            if incircle_nb(X[a], Y[a], X[b], Y[b], X[c], Y[c], X[q], Y[q], w) > 0:
+                _flip(tri, nbr, cid, vt, t, k)
+                top = _push(stack, mark, top, t)
+                top = _push(stack, mark, top, o)
+                break
+    return top
 
 
-@njit(cache=True)
-def _insert_segment(s, a, b, tri, nbr, cid, vt, X, Y, w, through, err, queue, touched, stack):
-    """Insert constraint segment number s from vertex a to vertex b.  False on error (see err).
+@njit(cache=True, inline="always")
+def _insert_segment(s, a, b, tri, nbr, cid, vt, X, Y, w, through, err, queue, touched, stack, mark):
+    """Insert constraint segment s (its input number: written to ``cid`` and ``through[s]``)
+    from vertex a to vertex b.  False on error (see err).
 
     Sloan's method: collect the edges crossed by the segment, flip each one whose
     quadrilateral is strictly convex (re-queueing it if the new diagonal still
@@ -271,16 +286,31 @@ def _insert_segment(s, a, b, tri, nbr, cid, vt, X, Y, w, through, err, queue, to
         cid[t, k] = s
         o = nbr[t, k]
         cid[o, third(tri, o, a, e)] = s
-        # --- restore the constrained Delaunay property in the touched triangles
+        # --- restore the constrained Delaunay property in the touched triangles (flips keep
+        # triangle ids, so the crossed triangles' ids are exactly the retriangulated region)
         top = 0
         for i in range(nt):
-            t = touched[i]
-            for k in range(3):
-                stack[top, 0] = tri[t, (k + 1) % 3]
-                stack[top, 1] = tri[t, (k + 2) % 3]
-                top += 1
-        _legalize(tri, nbr, cid, vt, X, Y, w, stack, top)
+            top = _push(stack, mark, top, touched[i])
+        _legalize(tri, nbr, cid, vt, X, Y, w, stack, mark, top)
         a = e
+    return True
+
+
+@njit(cache=True, _nrt=False)
+def _insert_all(tri, nbr, cid, vt, X, Y, seg, through, err, w, ids, queue, touched, stack, mark):
+    """``insert_segments`` on scratch arrays from the caller: ``queue`` (m + 3, 2), ``touched``
+    and ``stack`` (m + 3,), ``mark`` (m,) all zero.
+
+    Compiled without numba's reference counting (as ``mesh/kernel.build``): the helpers are
+    inlined, and each array they receive would otherwise cost an atomic incref/decref pair per
+    call.  Nothing compiled in here may allocate an array; the exact stages of the predicates
+    carry reference counting of their own."""
+    for i in range(seg.shape[0]):
+        s = ids[i]
+        if not _insert_segment(s, seg[i, 0], seg[i, 1], tri, nbr, cid, vt, X, Y, w, through, err,
+                               queue, touched, stack, mark):
+            err[1] = s
+            return False
     return True
 
 
@@ -294,25 +324,85 @@ def orient_many(X, Y, a, b, c, w):
 
 
 @njit(cache=True)
-def insert_segments(tri, nbr, cid, vt, X, Y, seg, through, err, w):
-    """Insert every segment ``seg[s] = (a, b)`` (vertex ids) into the triangulation in place.
+def insert_segments(tri, nbr, cid, vt, X, Y, seg, through, err, w, ids=None):
+    """Insert every segment ``seg[i] = (a, b)`` (vertex ids) into the triangulation in place.
 
-    ``cid[t, k]`` receives the segment id of constraint edges; ``through[s]`` the
-    first vertex found strictly inside segment s (or stays -1).  Returns False
-    and fills ``err = [code, s, other segment, u, v]`` when segment s properly
-    crosses the constraint edge (u, v) of segment ``other``.  ``w`` is a
-    ``workspace()`` scratch array for the predicates.
+    Segment i is known as ``s = ids[i]`` (i without ``ids``; ``through`` and ``cid`` are
+    indexed by these numbers).  ``cid[t, k]`` receives s for constraint edges;
+    ``through[s]`` the first vertex found strictly inside segment s (or stays -1).  Returns
+    False and fills ``err = [code, s, other segment, u, v]`` when segment s properly crosses
+    the constraint edge (u, v) of segment ``other``.  ``w`` is a ``workspace()`` scratch
+    array for the predicates.
     """
+    if ids is None:
+        ids = np.arange(seg.shape[0])
     cap = tri.shape[0] + 3
     queue = np.empty((cap, 2), np.int64)       # crossing edges (at most one per triangle)
-    touched = np.empty(cap, np.int64)
-    stack = np.empty((3 * cap + 16, 2), np.int64)
-    for s in range(seg.shape[0]):
-        if not _insert_segment(s, seg[s, 0], seg[s, 1], tri, nbr, cid, vt, X, Y, w, through, err,
-                               queue, touched, stack):
-            err[1] = s
-            return False
-    return True
+    touched = np.empty(cap, np.int64)          # the triangles crossed by one piece of a segment
+    stack = np.empty(cap, np.int64)            # legalization: each triangle at most once
+    mark = np.zeros(cap, np.int8)
+    return _insert_all(tri, nbr, cid, vt, X, Y, seg, through, err, w, ids, queue, touched, stack, mark)
+
+
+@njit(cache=True, inline="always")
+def _before(key, p, q):
+    """Row p of ``key`` is lexicographically smaller than row q."""
+    for j in range(key.shape[1]):
+        if key[p, j] != key[q, j]:
+            return key[p, j] < key[q, j]
+    return False
+
+
+@njit(cache=True)
+def canonical_segments(seg, X, Y):
+    """The segments in canonical order: ``(oriented, order)`` with ``oriented[i]`` input segment
+    ``order[i]`` taken from its lexicographically smaller end, sorted by the coordinates
+    (xa, ya, xb, yb), ties in input order (what ``np.lexsort`` gives; a merge sort here)."""
+    k = seg.shape[0]
+    key = np.empty((k, 4))
+    ends = np.empty((k, 2), np.int64)
+    for i in range(k):
+        a = seg[i, 0]
+        b = seg[i, 1]
+        if X[a] > X[b] or (X[a] == X[b] and Y[a] > Y[b]):
+            a, b = b, a
+        ends[i, 0] = a
+        ends[i, 1] = b
+        key[i, 0] = X[a]
+        key[i, 1] = Y[a]
+        key[i, 2] = X[b]
+        key[i, 3] = Y[b]
+    order = np.arange(k)
+    tmp = np.empty(k, np.int64)
+    width = 1
+    while width < k:                           # bottom-up, stable: a right item moves first
+        for lo in range(0, k, 2 * width):      # only when strictly smaller
+            mid = min(lo + width, k)
+            hi = min(lo + 2 * width, k)
+            i, j, o = lo, mid, lo
+            while i < mid and j < hi:
+                if _before(key, order[j], order[i]):
+                    tmp[o] = order[j]
+                    j += 1
+                else:
+                    tmp[o] = order[i]
+                    i += 1
+                o += 1
+            while i < mid:
+                tmp[o] = order[i]
+                i += 1
+                o += 1
+            while j < hi:
+                tmp[o] = order[j]
+                j += 1
+                o += 1
+        order, tmp = tmp, order
+        width *= 2
+    oriented = np.empty((k, 2), np.int64)
+    for i in range(k):
+        oriented[i, 0] = ends[order[i], 0]
+        oriented[i, 1] = ends[order[i], 1]
+    return oriented, order
 
 
 
@@ -346,26 +436,18 @@ def constrain_delaunay(d: Delaunay, segments: np.ndarray) -> ConstrainedMesh:
     through = np.full(len(segments), -1, dtype=np.int64)
     if len(tri) == 0 or len(segments) == 0:
         return ConstrainedMesh(tri, nbr, cid, through, None)
-    seg = rep[segments]
+    X = np.ascontiguousarray(pts[:, 0])
+    Y = np.ascontiguousarray(pts[:, 1])
     # canonical order: each segment from its lexicographically smaller end, sorted by coordinates
-    a, b = seg[:, 0], seg[:, 1]
-    swap = (pts[a, 0] > pts[b, 0]) | ((pts[a, 0] == pts[b, 0]) & (pts[a, 1] > pts[b, 1]))
-    seg = np.where(swap[:, None], seg[:, ::-1], seg)
-    order = np.lexsort((pts[seg[:, 1], 1], pts[seg[:, 1], 0], pts[seg[:, 0], 1], pts[seg[:, 0], 0]))
+    seg, order = canonical_segments(rep[segments], X, Y)
     vt = vertex_triangles(tri, n)
     err = np.zeros(5, dtype=np.int64)
     err[0] = status.OK                                # the kernel writes CROSSING or LOST here
-    sub_through = np.full(len(seg), -1, dtype=np.int64)
-    ok = insert_segments(tri, nbr, cid, vt, pts[:, 0].copy(), pts[:, 1].copy(),
-                         np.ascontiguousarray(seg[order]), sub_through, err, workspace())
-    mask = cid >= 0
-    cid[mask] = order[cid[mask]]                      # back to input segment numbers
-    through[order] = sub_through
+    ok = insert_segments(tri, nbr, cid, vt, X, Y, seg, through, err, workspace(), order)
     if not ok:
         if status.check(err[0], "constrained Delaunay: the segment walk") != CROSSING:
             raise status.KernelError(f"constrained Delaunay: the segment walk ended with {status.NAMES[int(err[0])]}")
-        return ConstrainedMesh(tri, nbr, cid, through,
-                       (int(order[err[1]]), int(order[err[2]]), int(err[3]), int(err[4])))
+        return ConstrainedMesh(tri, nbr, cid, through, (int(err[1]), int(err[2]), int(err[3]), int(err[4])))
     return ConstrainedMesh(tri, nbr, cid, through, None)
 
 

@@ -24,11 +24,12 @@ from typing import NamedTuple, Sequence
 import numpy as np
 from numpy.typing import ArrayLike
 
-from reference_impl.exact.predicates import orient2d, workspace
+from numba import njit
+
+from reference_impl.exact.predicates import orient2d, orient2d_nb, workspace
 from reference_impl.mesh.delaunay import Delaunay
-from reference_impl.mesh.topology import triangles_left_of
-from reference_impl.structures.constrained import constrain_delaunay, format_point, orient_many
-from reference_impl.validate import as_ring
+from reference_impl.structures.constrained import constrain_delaunay, format_point
+from reference_impl.validate import as_rings
 
 __all__ = ["PolygonTriangulation", "polygon_triangulation"]
 
@@ -59,6 +60,74 @@ def _winding(p, ring_pts: np.ndarray) -> int:
     return wn
 
 
+@njit(cache=True)
+def _ring_turns(X, Y, offset, w):
+    """Exact orientation of each ring (+1 counter-clockwise), read at its lexicographically
+    smallest vertex, which is a convex corner.  Ring r is vertices ``offset[r]:offset[r + 1]``."""
+    out = np.empty(offset.shape[0] - 1, np.int64)
+    for r in range(offset.shape[0] - 1):
+        lo, hi = offset[r], offset[r + 1]
+        v = lo
+        for i in range(lo + 1, hi):
+            if X[i] < X[v] or (X[i] == X[v] and Y[i] < Y[v]):
+                v = i
+        p = v - 1 if v > lo else hi - 1
+        q = v + 1 if v + 1 < hi else lo
+        out[r] = orient2d_nb(X[p], Y[p], X[v], Y[v], X[q], Y[q], w)
+    return out
+
+
+@njit(cache=True)
+def _free_space(tri, nbr, cid, succ, nb):
+    """The triangles of the free space, by a flood fill that never crosses a constraint edge.
+
+    ``succ[u]``: the next vertex along u's (normalised) ring, so the free space is left of
+    every ring edge u -> succ[u]; the boundary is vertices ``0 .. nb-1``.  Returns ``left``
+    (the triangle having the directed edge u -> succ[u], -1 if none), ``free`` (triangles
+    reached from the left of a boundary edge), and the free triangles compacted: their
+    vertices and neighbours (-1 across a constraint edge)."""
+    m = tri.shape[0]
+    left = np.full(succ.shape[0], -1, np.int64)
+    for t in range(m):
+        for k in range(3):
+            u = tri[t, (k + 1) % 3]
+            if succ[u] == tri[t, (k + 2) % 3]:
+                left[u] = t
+    free = np.zeros(m, np.bool_)
+    stack = np.empty(m, np.int64)
+    top = 0
+    for u in range(nb):
+        t = left[u]
+        if t >= 0 and not free[t]:
+            free[t] = True
+            stack[top] = t
+            top += 1
+    while top > 0:
+        top -= 1
+        t = stack[top]
+        for k in range(3):
+            o = nbr[t, k]
+            if o >= 0 and cid[t, k] < 0 and not free[o]:
+                free[o] = True
+                stack[top] = o
+                top += 1
+    new = np.full(m, -1, np.int64)
+    count = 0
+    for t in range(m):
+        if free[t]:
+            new[t] = count
+            count += 1
+    simp = np.empty((count, 3), np.int64)
+    nbrs = np.empty((count, 3), np.int64)
+    for t in range(m):
+        r = new[t]
+        if r >= 0:
+            for k in range(3):
+                simp[r, k] = tri[t, k]
+                nbrs[r, k] = -1 if cid[t, k] >= 0 or nbr[t, k] < 0 else new[nbr[t, k]]
+    return left, free, simp, nbrs
+
+
 def polygon_triangulation(boundary: ArrayLike, holes: Sequence[ArrayLike] | None = ()) -> PolygonTriangulation:
     """Constrained Delaunay triangulation of a polygon with holes (triangles inside only).
 
@@ -81,15 +150,15 @@ def polygon_triangulation(boundary: ArrayLike, holes: Sequence[ArrayLike] | None
     if isinstance(holes, (str, bytes)):
         raise ValueError("holes must be a sequence of polygons")
     names = ["boundary"] + [f"hole {h}" for h in range(len(holes))]
-    rings = [as_ring(boundary, "boundary")] + [as_ring(h, f"holes[{i}]") for i, h in enumerate(holes)]
-    sizes = np.array([len(r) for r in rings])
+    pts, sizes = as_rings([boundary, *holes], ["boundary"] + [f"holes[{i}]" for i in range(len(holes))])
+    nrings = len(sizes)
     offset = np.concatenate([[0], np.cumsum(sizes)])
-    pts = np.vstack(rings)
-    ring_of = np.repeat(np.arange(len(rings)), sizes)
-    local = np.arange(len(pts)) - offset[ring_of]
-    nxt = np.arange(len(pts)) + 1
+    n = len(pts)
+    ring_of = np.repeat(np.arange(nrings), sizes)
+    local = np.arange(n) - offset[ring_of]
+    nxt = np.arange(n) + 1
     nxt[offset[1:] - 1] = offset[:-1]
-    seg = np.stack([np.arange(len(pts)), nxt], axis=1)
+    seg = np.stack([np.arange(n), nxt], axis=1)
 
     def vname(i):
         return f"{names[ring_of[i]]} vertex {local[i]} {format_point(pts[i])}"
@@ -113,40 +182,24 @@ def polygon_triangulation(boundary: ArrayLike, holes: Sequence[ArrayLike] | None
         s = hit[0]
         raise ValueError(f"polygon is not simple: {vname(k.through[s])} lies on {ename(s)}")
     # orientation from the lexicographically smallest vertex (a convex corner): boundary CCW, holes CW
-    prv = np.arange(len(pts)) - 1
+    X, Y = np.ascontiguousarray(pts[:, 0]), np.ascontiguousarray(pts[:, 1])
+    prv = np.arange(n) - 1
     prv[offset[:-1]] = offset[1:] - 1
-    lowest = np.lexsort((pts[:, 1], pts[:, 0], ring_of))[offset[:-1]]
-    ccw = orient_many(pts[:, 0].copy(), pts[:, 1].copy(), prv[lowest], lowest, nxt[lowest], workspace()) > 0
-    flip = ccw != (np.arange(len(rings)) == 0)
+    flip = (_ring_turns(X, Y, offset, workspace()) > 0) != (np.arange(nrings) == 0)
     succ = np.where(flip[ring_of], prv, nxt)              # next vertex along the normalised ring
     ring_idx = [np.arange(offset[r + 1] - 1, offset[r] - 1, -1) if flip[r] else np.arange(offset[r], offset[r + 1])
-                for r in range(len(rings))]
+                for r in range(nrings)]
     # flood fill from the inside of the boundary, never crossing a constraint edge
-    tri, nbr, cid = k.tri, k.nbr, k.cid
-    m, n = len(tri), len(pts)
-    # the triangle left of each normalised ring edge u -> succ[u]: boundary edges, then hole edges
-    starts = np.concatenate([ring_idx[0], np.arange(offset[1], n)])
-    left = triangles_left_of(tri, n, starts, succ[starts])
-    t_idx, k_idx = np.nonzero((nbr >= 0) & (cid < 0))
-    from scipy.sparse import coo_matrix          # (imported here: scipy.sparse takes 0.2-0.4 s to import)
-    from scipy.sparse.csgraph import connected_components
-
-    graph = coo_matrix((np.ones(len(t_idx)), (t_idx, nbr[t_idx, k_idx])), shape=(m, m))
-    _, label = connected_components(graph, directed=False)
-    seeds = left[:len(ring_idx[0])]
-    free = np.isin(label, label[seeds])
-    if len(rings) > 1:
-        side, owner = left[len(ring_idx[0]):], ring_of[offset[1]:]
+    left, free, simp, nb = _free_space(k.tri, k.nbr, k.cid, succ, offset[1])
+    if nrings > 1:
+        side, owner = left[offset[1]:], ring_of[offset[1]:]
         bad = np.flatnonzero((side < 0) | ~free[side])
         if len(bad):
             h = int(owner[bad[0]])
-            p = rings[h][0]
-            if _winding(p, rings[0]) == 0:
+            p = pts[offset[h]]
+            if _winding(p, pts[:offset[1]]) == 0:
                 raise ValueError(f"{names[h]} lies outside the boundary")
-            inside = [g for g in range(1, len(rings)) if g != h and _winding(p, rings[g]) != 0]
+            inside = [g for g in range(1, nrings) if g != h and _winding(p, pts[offset[g]:offset[g + 1]]) != 0]
             where = f"inside hole {inside[0] - 1}" if inside else "around another hole"
             raise ValueError(f"{names[h]} lies {where}; holes must be disjoint")
-    new = np.full(m + 1, -1, dtype=np.int64)
-    new[np.flatnonzero(free)] = np.arange(int(free.sum()))
-    nb = np.where(cid[free] >= 0, -1, new[nbr[free]])
-    return PolygonTriangulation(pts, tri[free].copy(), nb, tuple(ring_idx))
+    return PolygonTriangulation(pts, simp, nb, tuple(ring_idx))

@@ -21,7 +21,7 @@ from reference_impl.exact.predicates import incircle, orient2d
 from reference_impl.exact.predicates3d import insphere, orient3d
 from reference_impl.exact.scaling import pow2_exponent, pow2_scale
 from reference_impl.exact.verify import exact_sign
-from reference_impl.validate import as_bbox, as_point_rows, as_ring, as_xy, as_xyz
+from reference_impl.validate import as_bbox, as_point_rows, as_ring, as_rings, as_xy, as_xyz
 
 MAGS = [1.0, 1e-300, 1e300, 1e-160, 1e160, 2.0 ** -1070, 0.1]
 
@@ -206,3 +206,46 @@ def test_moved_validators_keep_their_messages():
     assert as_ring([(0, 0), (1, 0), (1, 0), (1, 1), (0, 0)], "boundary").tolist() == [[0, 0], [1, 0], [1, 1]]
     with pytest.raises(ValueError, match="holes\\[0\\] needs at least 3 distinct vertices, got 2"):
         as_ring([(0, 0), (1, 0), (0, 0)], "holes[0]")
+
+
+def _ring_or_error(ring, name):
+    try:
+        return as_ring(ring, name)
+    except ValueError as exc:
+        return str(exc)
+
+
+def test_as_rings_is_as_ring_ring_by_ring():
+    """The batched check gives as_ring's answers, or the first bad ring's error, on rings with
+    repeated vertices, closing copies, NaN, too few vertices, -0.0, ints, lists and bools."""
+    rng = np.random.default_rng(5)
+    kinds = 0
+    for _ in range(400):
+        rings = []
+        for _ in range(rng.integers(1, 6)):
+            k = int(rng.integers(1, 7))
+            r = rng.integers(-2, 3, (k, 2)).astype(float)
+            if rng.random() < 0.3:
+                r = np.repeat(r, rng.integers(1, 3, k), axis=0)       # repeated vertices
+            if rng.random() < 0.2:
+                r = np.vstack([r, r[:1]])                             # closing copy
+            if rng.random() < 0.05:
+                r[rng.integers(len(r)), rng.integers(2)] = np.nan
+            if rng.random() < 0.5:
+                r = np.where(r == 0, -0.0, r)                         # -0.0 for every zero
+            form = int(rng.integers(4)) if np.isfinite(r).all() else 0
+            rings.append(r if form == 0 else r.astype(np.int64) if form == 1 else r.tolist() if form == 2 else r != 0)
+            kinds |= 1 << form
+        names = [f"ring{i}" for i in range(len(rings))]
+        want = [_ring_or_error(r, nm) for r, nm in zip(rings, names)]
+        error = next((w for w in want if isinstance(w, str)), None)
+        if error is not None:
+            with pytest.raises(ValueError) as caught:
+                as_rings(rings, names)
+            assert str(caught.value) == error
+            continue
+        pts, sizes = as_rings(rings, names)
+        assert sizes.tolist() == [len(w) for w in want]
+        np.testing.assert_array_equal(pts, np.vstack(want))
+        assert not (np.signbit(pts) & (pts == 0)).any()                # -0.0 normalised
+    assert kinds == 15

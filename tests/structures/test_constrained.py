@@ -40,7 +40,7 @@ from hypothesis import given, settings, strategies as st
 
 import pointsets
 from exact_oracle import exact, incircle, orient
-from reference_impl.structures.constrained import ConstrainedDelaunay, constrained_delaunay
+from reference_impl.structures.constrained import ConstrainedDelaunay, canonical_segments, constrained_delaunay
 from reference_impl.exact.verify import (convex_hull_exact, exact_coordinates, incircle_exact,
                                    orient_exact)
 
@@ -193,6 +193,22 @@ def test_grid_with_segments_through_vertices(seed, side):
     shuffle = rng.permutation(len(pts))
     moved = ConstrainedDelaunay(pts[shuffle], np.argsort(shuffle)[segs])
     assert triangle_set(shuffle[moved.simplices]) == triangle_set(cdt.simplices)
+
+
+def test_canonical_segments_is_a_stable_lexsort():
+    """canonical_segments (a merge sort in numba) against numpy's stable lexsort, with many ties."""
+    rng = np.random.default_rng(3)
+    for k in (0, 1, 2, 3, 7, 64, 1000):
+        pts = rng.integers(0, 4, (40, 2)).astype(float)
+        seg = rng.integers(0, 40, (k, 2))
+        X, Y = pts[:, 0].copy(), pts[:, 1].copy()
+        a, b = seg[:, 0], seg[:, 1]
+        swap = (X[a] > X[b]) | ((X[a] == X[b]) & (Y[a] > Y[b]))
+        ends = np.where(swap[:, None], seg[:, ::-1], seg)
+        want = np.lexsort((Y[ends[:, 1]], X[ends[:, 1]], Y[ends[:, 0]], X[ends[:, 0]]))
+        oriented, order = canonical_segments(seg, X, Y)
+        assert order.tolist() == want.tolist()
+        assert oriented.tolist() == ends[want].tolist()
 
 
 def test_segment_through_vertex_is_split():
