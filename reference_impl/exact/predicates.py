@@ -42,8 +42,8 @@ import numba
 import numpy as np
 from numba import njit
 
-from reference_impl.exact.expansion import (EPSILON, accumulate, add, certain_sign, diff, mul,
-                                            negate, sign, sign_of, two_diff)
+from reference_impl.exact.expansion import (EPSILON, accumulate, add, certain_sign, compress, diff,
+                                            mul, negate, scale, sign, sign_of, two_diff)
 from reference_impl.exact.coldcall import cold
 from reference_impl.exact.scaling import pow2_scale
 from reference_impl.exact.verify import exact_sign
@@ -74,6 +74,8 @@ _TERM = 1152                        # 512
 _ACC, _ACC2 = 1664, 3328            # 1536 each
 _V = 4864                           # 8: scaled coordinates
 _L = 4872                           # 6: lengths of the differences (stored as floats)
+_SB = 4896                          # 448: the "exact differences" stage (_incircle_of_differences)
+_B_LO, _B_HI = 2.0 ** -150, 2.0 ** 150   # its safe range for |differences| (_safe)
 
 
 def workspace() -> np.ndarray:
@@ -86,6 +88,47 @@ def workspace() -> np.ndarray:
 def _small_integer(d, limit):
     """True when d is an integer with |d| < limit (then products of such stay exact)."""
     return abs(d) < limit and d == math.floor(d)
+
+
+@njit(cache=True)
+def _safe(d):
+    """0, or a magnitude whose fourth power and its rounding errors stay normal doubles."""
+    return d == 0.0 or _B_LO < abs(d) < _B_HI
+
+
+@njit(cache=True)
+def _cross(a, b, c, d, w, at):
+    """w[at:at+4] = a*d - b*c exactly (two products, one expansion sum); returns the length."""
+    w[at + 4] = a
+    w[at + 5] = b
+    n1 = scale(w[at + 4:at + 5], 1, d, w[at + 6:at + 8])
+    n2 = scale(w[at + 5:at + 6], 1, -c, w[at + 8:at + 10])
+    return add(w[at + 6:at + 6 + n1], n1, w[at + 8:at + 8 + n2], n2, w[at:at + 4])
+
+
+@njit(cache=True)
+def _lifted(x, y, cross, n, w, at):
+    """w[at:at+32] = (x^2 + y^2) * cross exactly, as x*(x*cross) + y*(y*cross); the length."""
+    nx = scale(cross, n, x, w[at + 32:at + 40])
+    nxx = scale(w[at + 32:at + 32 + nx], nx, x, w[at + 40:at + 56])
+    ny = scale(cross, n, y, w[at + 56:at + 64])
+    nyy = scale(w[at + 56:at + 56 + ny], ny, y, w[at + 64:at + 80])
+    return add(w[at + 40:at + 40 + nxx], nxx, w[at + 64:at + 64 + nyy], nyy, w[at:at + 32])
+
+
+@njit(cache=True, _nrt=False)
+def _incircle_of_differences(adx, ady, bdx, bdy, cdx, cdy, w):
+    """Exact sign of the in-circle determinant of exact differences (all ``_safe``)."""
+    b = _SB
+    nbc = _cross(bdx, cdx, bdy, cdy, w, b)           # bdx*cdy - cdx*bdy
+    nca = _cross(cdx, adx, cdy, ady, w, b + 16)      # cdx*ady - adx*cdy
+    nab = _cross(adx, bdx, ady, bdy, w, b + 32)      # adx*bdy - bdx*ady
+    na = _lifted(adx, ady, w[b:b + nbc], nbc, w, b + 48)
+    nb = _lifted(bdx, bdy, w[b + 16:b + 16 + nca], nca, w, b + 128)
+    nc = _lifted(cdx, cdy, w[b + 32:b + 32 + nab], nab, w, b + 208)
+    nab2 = add(w[b + 48:b + 48 + na], na, w[b + 128:b + 128 + nb], nb, w[b + 288:b + 352])
+    n = add(w[b + 288:b + 288 + nab2], nab2, w[b + 208:b + 208 + nc], nc, w[b + 352:b + 448])
+    return sign_of(w[b + 352:b + 448], n)
 
 
 # The exact stages slice their workspace and may box it for the Python fallback, so they keep
@@ -150,13 +193,18 @@ def _incircle_exact(ax, ay, bx, by, cx, cy, dx, dy, w):
     bdy, t4 = two_diff(by, dy)
     cdx, t5 = two_diff(cx, dx)
     cdy, t6 = two_diff(cy, dy)
-    if (t1 == 0.0 and t2 == 0.0 and t3 == 0.0 and t4 == 0.0 and t5 == 0.0 and t6 == 0.0
-            and _small_integer(adx, _I_INT) and _small_integer(ady, _I_INT)
-            and _small_integer(bdx, _I_INT) and _small_integer(bdy, _I_INT)
-            and _small_integer(cdx, _I_INT) and _small_integer(cdy, _I_INT)):
-        return sign((adx * adx + ady * ady) * (bdx * cdy - cdx * bdy)
-                    + (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy)
-                    + (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady))
+    if t1 == 0.0 and t2 == 0.0 and t3 == 0.0 and t4 == 0.0 and t5 == 0.0 and t6 == 0.0:
+        if (_small_integer(adx, _I_INT) and _small_integer(ady, _I_INT)
+                and _small_integer(bdx, _I_INT) and _small_integer(bdy, _I_INT)
+                and _small_integer(cdx, _I_INT) and _small_integer(cdy, _I_INT)):
+            return sign((adx * adx + ady * ady) * (bdx * cdy - cdx * bdy)
+                        + (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy)
+                        + (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady))
+        # Stage "exact differences" (Shewchuk's stage B when its tails are zero): the
+        # determinant of the six exact differences, with expansions no longer than 96.
+        if (_safe(adx) and _safe(ady) and _safe(bdx) and _safe(bdy) and _safe(cdx)
+                and _safe(cdy)):
+            return _incircle_of_differences(adx, ady, bdx, bdy, cdx, cdy, w)
     v = w[_V:_V + 8]
     v[0] = ax; v[1] = ay; v[2] = bx; v[3] = by; v[4] = cx; v[5] = cy; v[6] = dx; v[7] = dy
     if not pow2_scale(v, _EXACT_MIN):
@@ -194,8 +242,12 @@ def _incircle_exact(ax, ay, bx, by, cx, cy, dx, dy, w):
         n2 = mul(kx, nkx, jy, njy, s2, t1, t2)
         negate(s2, n2)
         nc = add(s1, n1, s2, n2, cof)
+        # compressed first, the factors are a few components long (their values need about
+        # 110 bits), so the product costs a handful of two-products instead of up to 16 x 16
+        nl = compress(lift, nl)
+        nc = compress(cof, nc)
         nt = mul(lift, nl, cof, nc, term, t1, t2)
-        nacc = accumulate(acc, nacc, term, nt, acc2, False)
+        nacc = accumulate(acc, nacc, term, nt, acc2, True)
     return sign_of(acc, nacc)
 
 

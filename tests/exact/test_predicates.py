@@ -37,7 +37,7 @@ def _cases(rng: np.random.Generator, count: int):
     """Random and near-degenerate quadruples of points, at many scales."""
     out = []
     for i in range(count):
-        kind = i % 8
+        kind = i % 10
         if kind == 0:                                     # uniform
             pts = rng.random((4, 2))
         elif kind == 1:                                   # integer grid: exact ties
@@ -55,9 +55,17 @@ def _cases(rng: np.random.Generator, count: int):
             pts = 1e9 + rng.random((4, 2)) * 1e-6
         elif kind == 6:                                   # extreme uniform scales
             pts = rng.integers(-3, 4, (4, 2)) * 10.0 ** rng.choice([-300, -200, 200, 300])
-        else:                                             # mixed magnitudes in one call
+        elif kind == 7:                                   # mixed magnitudes in one call
             mags = 10.0 ** rng.choice([-310, -300, -150, 0, 150, 300], (4, 2))
             pts = rng.choice([-1.0, 0.0, 1.0, 3.0], (4, 2)) * mags
+        elif kind == 8:                                   # float rectangle: cocircular, with
+            (x0, x1), (y0, y1) = rng.random((2, 2)) * 10.0 ** rng.integers(-8, 9)   # exact or
+            pts = np.array([(x0, y0), (x1, y0), (x1, y1), (x0, y1)])[rng.permutation(4)]  # inexact
+            if rng.random() < 0.5:                        # differences; or one ulp off
+                pts[3] = np.nextafter(pts[3], rng.choice([-np.inf, np.inf], 2))
+        else:                                             # a float lattice: base + k * step
+            base, step = rng.random(2), rng.random() * 10.0 ** rng.integers(-6, 3)
+            pts = base + rng.integers(-3, 4, (4, 2)) * step
         out.append([tuple(map(float, p)) for p in pts])
     return out
 
