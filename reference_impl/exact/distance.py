@@ -35,6 +35,7 @@ from numba import njit
 from reference_impl.exact.expansion import (EPSILON, accumulate, add, certain_sign, diff, mul, negate,
                                             sign, sign_of, two_diff, two_product, two_sum)
 from reference_impl.exact.scaling import pow2_exponent, pow2_scale
+from reference_impl.exact.sorting import merge_sort
 
 __all__ = ["sq_dist_cmp", "dot_sign", "length_order", "scratch", "SCRATCH_SIZE"]
 
@@ -221,30 +222,11 @@ def _length_cmp(X, Y, u, v, key, err, E, L, i, j, w):
     return sq_dist_cmp(X[u[i]], Y[u[i]], X[v[i]], Y[v[i]], X[u[j]], Y[u[j]], X[v[j]], Y[v[j]], w)
 
 
-@njit(cache=True)
-def _merge_sort(seg, buf, X, Y, u, v, key, err, E, L, w):
-    """Stable bottom-up merge sort of the edge ids in ``seg`` by exact length."""
-    n = len(seg)
-    width = 1
-    while width < n:
-        for lo in range(0, n - width, 2 * width):
-            mid = lo + width
-            hi = min(lo + 2 * width, n)
-            a, b, k = lo, mid, 0
-            while a < mid and b < hi:
-                if _length_cmp(X, Y, u, v, key, err, E, L, seg[b], seg[a], w) < 0:
-                    buf[k] = seg[b]
-                    b += 1
-                else:
-                    buf[k] = seg[a]
-                    a += 1
-                k += 1
-            buf[k:k + mid - a] = seg[a:mid]
-            k += mid - a
-            buf[k:k + hi - b] = seg[b:hi]
-            k += hi - b
-            seg[lo:hi] = buf[:k]
-        width *= 2
+@njit(cache=True, inline="always")
+def _shorter(ctx, i, j):
+    """``merge_sort``'s comparison: edge i is exactly shorter than edge j."""
+    X, Y, u, v, key, err, E, L, w = ctx
+    return _length_cmp(X, Y, u, v, key, err, E, L, i, j, w) < 0
 
 
 @njit(cache=True)
@@ -255,7 +237,7 @@ def _sort_runs(X, Y, u, v, key, err, E, L, order, starts, ends):
     buf = np.empty(max(1, np.max(ends - starts)), dtype=order.dtype)
     same = np.zeros(len(order), dtype=np.bool_)
     for r in range(len(starts)):
-        _merge_sort(order[starts[r]:ends[r]], buf, X, Y, u, v, key, err, E, L, w)
+        merge_sort(order[starts[r]:ends[r]], buf, _shorter, (X, Y, u, v, key, err, E, L, w))
         for i in range(starts[r] + 1, ends[r]):
             same[i] = _length_cmp(X, Y, u, v, key, err, E, L, order[i - 1], order[i], w) == 0
     return same

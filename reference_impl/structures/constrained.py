@@ -50,6 +50,7 @@ from reference_impl.mesh.status import CROSSING, LOST
 from reference_impl.mesh.topology import find_edge, flip, slot, third, unique_edges, vertex_triangles
 from reference_impl.validate import as_index_rows
 from reference_impl.exact.predicates import incircle_nb, orient2d_nb, workspace
+from reference_impl.exact.sorting import merge_sort
 
 __all__ = ["ConstrainedDelaunay", "constrained_delaunay", "ConstrainedMesh", "constrain_delaunay",
            "fan_search", "insert_segments", "canonical_segments", "orient_many", "ray_ahead", "format_point"]
@@ -345,7 +346,7 @@ def insert_segments(tri, nbr, cid, vt, X, Y, seg, through, err, w, ids=None):
 
 
 @njit(cache=True, inline="always")
-def _before(key, p, q):
+def _before(key, p, q):  # (merge_sort's comparison)
     """Row p of ``key`` is lexicographically smaller than row q."""
     for j in range(key.shape[1]):
         if key[p, j] != key[q, j]:
@@ -357,7 +358,7 @@ def _before(key, p, q):
 def canonical_segments(seg, X, Y):
     """The segments in canonical order: ``(oriented, order)`` with ``oriented[i]`` input segment
     ``order[i]`` taken from its lexicographically smaller end, sorted by the coordinates
-    (xa, ya, xb, yb), ties in input order (what ``np.lexsort`` gives; a merge sort here)."""
+    (xa, ya, xb, yb), ties in input order (what ``np.lexsort`` gives; ``sorting.merge_sort`` here)."""
     k = seg.shape[0]
     key = np.empty((k, 4))
     ends = np.empty((k, 2), np.int64)
@@ -373,31 +374,7 @@ def canonical_segments(seg, X, Y):
         key[i, 2] = X[b]
         key[i, 3] = Y[b]
     order = np.arange(k)
-    tmp = np.empty(k, np.int64)
-    width = 1
-    while width < k:                           # bottom-up, stable: a right item moves first
-        for lo in range(0, k, 2 * width):      # only when strictly smaller
-            mid = min(lo + width, k)
-            hi = min(lo + 2 * width, k)
-            i, j, o = lo, mid, lo
-            while i < mid and j < hi:
-                if _before(key, order[j], order[i]):
-                    tmp[o] = order[j]
-                    j += 1
-                else:
-                    tmp[o] = order[i]
-                    i += 1
-                o += 1
-            while i < mid:
-                tmp[o] = order[i]
-                i += 1
-                o += 1
-            while j < hi:
-                tmp[o] = order[j]
-                j += 1
-                o += 1
-        order, tmp = tmp, order
-        width *= 2
+    merge_sort(order, np.empty(k, np.int64), _before, key)
     oriented = np.empty((k, 2), np.int64)
     for i in range(k):
         oriented[i, 0] = ends[order[i], 0]
