@@ -329,7 +329,7 @@ def build(P, M, stack, bad, ba, bb, bo, start_of, state, dup, hints, w):
     for p in range(1, n):
         if p == i1 or p == i2:
             continue
-        h = hints[p]
+        h = hints[p] if p < hints.shape[0] else -1     # (no hints: an empty array)
         if h >= 0:
             px = P[p, 0]
             py = P[p, 1]
