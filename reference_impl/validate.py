@@ -248,6 +248,8 @@ def as_rings(rings: Sequence[ArrayLike], names: Sequence[str]) -> tuple[np.ndarr
     >>> pts.tolist(), sizes.tolist()
     ([[0.0, 0.0], [4.0, 0.0], [0.0, 4.0], [1.0, 1.0], [2.0, 1.0], [1.0, 2.0]], [3, 3])
     """
+    if len(rings) == 0:
+        return np.zeros((0, 2)), np.zeros(0, dtype=np.int64)
     fast = [i for i, r in enumerate(rings) if isinstance(r, np.ndarray) and r.dtype.kind in "fiu"
             and r.ndim == 2 and r.shape[0] >= 3 and r.shape[1] == 2]
     clean = np.zeros(len(rings), dtype=bool)

@@ -151,9 +151,9 @@ def insert(p, P, M, stack, bad, ba, bb, bo, start_of, state, w):
     """Insert vertex p (coordinates P[p]) into a mesh with at least one triangle.
 
     Returns OK (-1) when inserted, or the vertex that p duplicates exactly (then the
-    mesh is unchanged).  Scratch arrays: ``stack``,
-    ``bad``, ``ba``, ``bb``, ``bo`` (per cavity; as long as the triangle arrays)
-    and ``start_of`` (per vertex, index v + 1).
+    mesh is unchanged).  Scratch arrays: ``stack``, ``bad``, ``ba``, ``bb``, ``bo`` (per
+    cavity; as long as the triangle arrays).  ``start_of`` is the vertex -> triangle map
+    (module docstring): set here for every vertex on the cavity boundary, never read.
     """
     px = P[p, 0]
     py = P[p, 1]
@@ -339,7 +339,8 @@ def build(P, M, stack, bad, ba, bb, bo, start_of, state, dup, hints, w):
                 state[S_LAST] = start_of[h + 1]
         dup[p] = insert(p, P, M, stack, bad, ba, bb, bo, start_of, state, w)
         start_of[p + 1] = state[S_LAST]     # incident to p (to its duplicate's star when dup)
-        last = p
+        if dup[p] < 0:
+            last = p                        # state[S_LAST] is a triangle of the last inserted
     return True
 
 
