@@ -143,6 +143,15 @@ class Delaunay:
             self._scratch = tuple(np.empty(self._cap_t, dtype=_ITYPE) for _ in range(5))
         return self._scratch
 
+    def _vertex_map(self) -> np.ndarray:
+        """``start_of``, the vertex -> triangle map (``kernel.py``), as long as the vertex
+        capacity.  A build drops its own (at 10^7 points it is 40 MB, and a plain build and
+        ``simplices`` never read it); it is made again here on first use, and
+        ``_ensure_dynamic`` makes it whole before anything reads it."""
+        if self._start_of is None:
+            self._start_of = np.empty(self._cap_v + 1, dtype=_ITYPE)
+        return self._start_of
+
     @property
     def _w(self) -> np.ndarray:
         """The exact predicates' workspace, made on first use."""
@@ -163,8 +172,9 @@ class Delaunay:
         else:
             order, hints = insertion_order(pts, with_hints=True)
         (self._flat, order, self._P, self._M, self._start_of, self._state, self._dup,
-         simp, out_of, rep) = kernel.triangulate(pts, order, hints, small and not self._nremoved, small)
+         simp, rep) = kernel.triangulate(pts, order, hints, small and not self._nremoved, small)
         self._cap_v, self._cap_t = len(self._P), len(self._M) // kernel.RECORD
+        self._start_of = None      # the build's vertex -> triangle map: see _vertex_map
         self._scratch = self._work = None
         n = len(order)
         # internal vertex u = input point order[u]
@@ -179,7 +189,7 @@ class Delaunay:
         self._line = None          # flat: two distinct live internal vertices (or None)
         self._cache = {}
         if small and not self._flat:
-            self._cache.update(simplices=simp, out_of=out_of, rep=rep, labels=rep)
+            self._cache.update(simplices=simp, rep=rep, labels=rep)
 
     def _grow_vertices(self) -> None:
         """Double the room for internal vertices (used by ``insert``)."""
@@ -187,7 +197,10 @@ class Delaunay:
         n, cap = self._n, 2 * self._cap_v
         self._alloc_vertices(cap)
         self._P[:n] = old_P[:n]
-        self._start_of[:len(old_start)] = old_start      # the vertex -> triangle map
+        if old_start is None:
+            self._start_of = None
+        else:
+            self._start_of[:len(old_start)] = old_start  # the vertex -> triangle map
         self._order = _grown(self._order[:n], cap, -1)
         self._dup = _grown(self._dup[:n], cap, -1)
         self._dead = _grown(self._dead[:n], cap, False)
@@ -233,7 +246,7 @@ class Delaunay:
                 self._copies.setdefault(r, [r]).append(u)
             self._pos = np.empty(cap + 1, dtype=np.int64)
             self._free = []                                # internal ids no longer in use
-            removal.init_vertex_map(self._M, int(self._state[kernel.S_NTRI]), self._start_of)
+            removal.init_vertex_map(self._M, int(self._state[kernel.S_NTRI]), self._vertex_map())
         self._dyn = True
 
     # ------------------------------------------------------------------ results
@@ -250,8 +263,8 @@ class Delaunay:
                 else:
                     rep = labels = self._representatives()
                 nt = int(self._state[kernel.S_NTRI])
-                simp, out_of = kernel.extract(self._M, nt, labels)
-                self._cache.update(simplices=simp, out_of=out_of, rep=rep, labels=labels)
+                simp = kernel.extract(self._M, nt, labels)
+                self._cache.update(simplices=simp, rep=rep, labels=labels)
         return self._cache
 
     def _lazy(self, key: str) -> np.ndarray:
@@ -260,7 +273,7 @@ class Delaunay:
         if key not in cache:
             nt = int(self._state[kernel.S_NTRI])
             if key == "neighbors":
-                cache[key] = kernel.extract_neighbors(self._M, nt, cache["out_of"], len(cache["simplices"]))
+                cache[key] = kernel.extract_neighbors(self._M, nt, self._rows(), len(cache["simplices"]))
             else:
                 cache[key] = kernel.hull_cycle(self._M, nt, self._n, cache["labels"])
         return cache[key]
@@ -278,7 +291,7 @@ class Delaunay:
         rep[alive[k]] = chain[np.cumsum(new) - 1]
         empty = np.zeros((0, 3), dtype=np.int64)
         return dict(simplices=empty, neighbors=empty.copy(), hull=chain,
-                    out_of=np.zeros(0, dtype=np.int64), rep=rep)
+                    rows=np.full(1, -1, dtype=np.int32), rep=rep)
 
     def _representatives(self) -> np.ndarray:
         """rep[internal vertex] = smallest input index among the points equal to it."""
@@ -389,12 +402,16 @@ class Delaunay:
             order = insertion_order(qs, brio=False) if len(qs) > 64 else np.arange(len(qs))
             found = kernel.find(self._M, self._P, qs[order], int(self._state[kernel.S_LAST]), self._w,
                                np.zeros(kernel.STATE_SIZE, dtype=np.int64))
-            res[order] = self._cache_out_of()[found]
+            res[order] = self._rows()[found]
         return int(res[0]) if shape == () else res.reshape(shape)
 
-    def _cache_out_of(self) -> np.ndarray:
-        out_of = self._result()["out_of"]
-        return np.concatenate([out_of, [-1]])  # index -1 (outside) maps to -1
+    def _rows(self) -> np.ndarray:
+        """Triangle slot -> row of ``simplices`` (-1 for ghosts, dead slots and index -1),
+        made on first use: a plain build and ``simplices`` do not need it."""
+        cache = self._result()
+        if "rows" not in cache:
+            cache["rows"] = kernel.triangle_rows(self._M, int(self._state[kernel.S_NTRI]))
+        return cache["rows"]
 
     # ------------------------------------------------------------------ adjacency (lazy, cached)
     @property
@@ -511,7 +528,8 @@ class Delaunay:
         self._P[u] = q
         self._order[u] = idx
         self._dead[u] = False
-        r = kernel.insert(u, self._P, self._M, *self._cavity_scratch(), self._start_of, self._state, self._w)
+        r = kernel.insert(u, self._P, self._M, *self._cavity_scratch(), self._vertex_map(), self._state,
+                          self._w)
         self._dup[u] = r
         if self._dyn:
             self._internal[idx] = u
