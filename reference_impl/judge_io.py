@@ -6,7 +6,7 @@ Kattis copy runs anywhere. Everything a submission sends is untrusted: the reade
 the exact shape asked for and raise ``PresentationError`` (verdict PE) with a message a student
 can act on, and they stop at ``max_rows`` rows before doing any work on them.
 
-Run the doctests: python -m doctest reference_impl/judge_io.py
+Run the doctests: python -m pytest reference_impl/judge_io.py
 
 >>> read_points("2\\n0 0.5\\n-1 2e-300\\n")
 [[0.0, 0.5], [-1.0, 2e-300]]

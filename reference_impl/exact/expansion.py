@@ -17,7 +17,8 @@ Conventions (the invariants every function here keeps):
 
 Never compile this with ``fastmath``: re-association destroys the error terms.
 
-Example (run ``python -m doctest reference_impl/exact/expansion.py``):
+Example (run ``python -m pytest reference_impl/exact/expansion.py``; a plain ``python -m doctest`` on the
+file would cache compiled code under the module name "expansion"):
 
 >>> import numpy as np
 >>> h = np.empty(4)

@@ -10,7 +10,7 @@ vertices, ends of collinear overlaps) cut it into open pieces that cross no wall
 lies entirely in one region; the midpoint of each piece decides (on a wall, or in the closed
 free space), and so do the segment's two ends. Cost O(walls x pieces) per segment.
 
-Run the doctests:  python -m doctest reference_impl/exact/free_space.py
+Run the doctests:  python -m pytest reference_impl/exact/free_space.py
 
 >>> room = [(0, 0), (10, 0), (10, 10), (0, 10)]
 >>> pillar = [(4, 4), (6, 4), (6, 6), (4, 6)]

@@ -5,7 +5,7 @@ Delaunay triangulation non-unique), and the tests use them as an oracle that
 shares no code with the predicates it checks: every decision here is made with
 Python integers, after scaling all coordinates by one common power of two.
 
-Run the doctest:  python -m doctest reference_impl/exact/verify.py
+Run the doctest:  python -m pytest reference_impl/exact/verify.py
 
 >>> pts = [(0, 0), (1, 0), (0, 1), (1, 1)]
 >>> check_delaunay(pts, [(0, 1, 3), (0, 3, 2)])

@@ -1,6 +1,6 @@
 """The lesson kit: the interactive widgets every lesson of the course is built from.
 
-Run the examples:  python -m doctest reference_impl/kit/__init__.py
+Run the examples:  python -m pytest reference_impl/kit/__init__.py
 
 Import it explicitly (``import reference_impl`` does not load it, so the judge
 and the library never import ipywidgets):

@@ -1,6 +1,6 @@
 """The measurement panel: choose n, run, and see the timings on a log-log plot with fitted slopes.
 
-Run the examples:  python -m doctest reference_impl/kit/measure.py
+Run the examples:  python -m pytest reference_impl/kit/measure.py
 
 ``MeasurePanel(run, ns)`` calls ``run(n)``, which returns a dict of timings in
 seconds (one entry per contender, e.g. ``{"bowyer_watson": 0.8, "Delaunay": 0.01}``),

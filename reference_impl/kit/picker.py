@@ -1,6 +1,6 @@
 """The point picker: click to add a point, drag to move it, click it to remove it.
 
-Run the examples:  python -m doctest reference_impl/kit/picker.py
+Run the examples:  python -m pytest reference_impl/kit/picker.py
 
 The picture is an ``ipywidgets.Image`` rendered by matplotlib's Agg backend
 (``render.Canvas``); ``ipyevents`` reports mouse events on it in image pixels,

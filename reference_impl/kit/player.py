@@ -1,6 +1,6 @@
 """The step player: play, pause, slide, step back and forth through any recorded algorithm.
 
-Run the examples:  python -m doctest reference_impl/kit/player.py
+Run the examples:  python -m pytest reference_impl/kit/player.py
 
 ``StepPlayer(steps, draw)`` shows one picture per step: ``draw(ax, step, index)``
 draws step ``index`` on a matplotlib Axes.  With ``pseudocode`` (a list of

@@ -1,6 +1,6 @@
 """Predict, then reveal: the student commits to an answer before the answer is shown.
 
-Run the examples:  python -m doctest reference_impl/kit/quiz.py
+Run the examples:  python -m pytest reference_impl/kit/quiz.py
 
 ``PredictReveal`` asks one question with one right choice; ``PredictRevealMany``
 asks for every right choice (e.g. "which triangles are bad?").  The choices are

@@ -1,6 +1,6 @@
 """Drawing for the lesson widgets: one persistent Agg figure rendered to PNG bytes, and helpers.
 
-Run the examples:  python -m doctest reference_impl/kit/render.py
+Run the examples:  python -m pytest reference_impl/kit/render.py
 
 Every kit widget draws with matplotlib's Agg renderer into a ``Canvas`` that it
 keeps for its whole life (no pyplot, no new figure per frame) and shows the PNG

@@ -1,6 +1,6 @@
 """What every kit widget shares: callbacks that report their errors, and a static picture.
 
-Run the examples:  python -m doctest reference_impl/kit/widget.py
+Run the examples:  python -m pytest reference_impl/kit/widget.py
 
 * JupyterLab swallows exceptions raised in widget callbacks.  ``KitWidget.guard``
   wraps a callback so that its traceback is printed into the widget's own

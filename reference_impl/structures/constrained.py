@@ -30,7 +30,7 @@ included) do not depend on the order of the segments or of the points.
 ``polygon.polygon_triangulation`` (polygons with holes) is built on this module
 (``constrain_delaunay``); the mesh helpers it uses are in ``mesh/topology.py``.
 
-Run the doctests:  python -m doctest reference_impl/structures/constrained.py
+Run the doctests:  python -m pytest reference_impl/structures/constrained.py
 
 >>> cdt = ConstrainedDelaunay([(0, 0), (4, 0), (4, 4), (0, 4), (1, 2), (3, 2)], [(0, 2)])
 >>> [0, 2] in cdt.constraint_edges().tolist()

@@ -6,7 +6,7 @@ seen walking towards the goal): the "simple stupid funnel" of the game
 industry's navigation meshes, with the exact ``orient2d`` for every test.
 ``navmesh.NavMesh.channel_path`` feeds it the channel that A* finds.
 
-Run the doctests:  python -m doctest reference_impl/structures/funnel.py
+Run the doctests:  python -m pytest reference_impl/structures/funnel.py
 
 >>> funnel((0, 0), (4, 0), [((1, 1), (1, -1)), ((3, 1), (3, -1))])     # nothing in the way
 [(0, 0), (4, 0)]

@@ -37,7 +37,7 @@ How a query works, and why the answer is optimal:
 
 Lengths are summed in floating point; every decision about geometry is exact.
 
-Run the doctests:  python -m doctest reference_impl/structures/navmesh.py
+Run the doctests:  python -m pytest reference_impl/structures/navmesh.py
 
 >>> room = [(0, 0), (10, 0), (10, 10), (0, 10)]
 >>> pillar = [(4, 4), (6, 4), (6, 6), (4, 6)]

@@ -11,7 +11,7 @@ triangles kept are those a flood fill reaches from the inside of the boundary
 without crossing a constraint edge.  ``navmesh.NavMesh`` answers shortest-path
 queries on the result.
 
-Run the doctests:  python -m doctest reference_impl/structures/polygon.py
+Run the doctests:  python -m pytest reference_impl/structures/polygon.py
 
 >>> pt = polygon_triangulation([(0, 0), (4, 0), (4, 4), (0, 4)], [[(1, 1), (1, 3), (3, 3), (3, 1)]])
 >>> len(pt.simplices), [r.tolist() for r in pt.rings]

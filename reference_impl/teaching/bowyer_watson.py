@@ -1,6 +1,6 @@
 """The teaching Bowyer-Watson: readable Python that follows the tutorial's pseudocode, corrected.
 
-Run the examples:  python -m doctest reference_impl/teaching/bowyer_watson.py
+Run the examples:  python -m pytest reference_impl/teaching/bowyer_watson.py
 Print the dry run: python -c "from reference_impl.teaching.bowyer_watson import dry_run; print(dry_run())"
 
 This is the version students read (the fast one is ``Delaunay`` in

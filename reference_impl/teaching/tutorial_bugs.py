@@ -1,7 +1,7 @@
 """The original Bowyer-Watson tutorial's code (the one this course corrects), reproduced on
 purpose: an exhibit of what goes wrong.
 
-Run the examples:  python -m doctest reference_impl/teaching/tutorial_bugs.py
+Run the examples:  python -m pytest reference_impl/teaching/tutorial_bugs.py
 
 Do not use this code to triangulate anything; use ``bowyer_watson`` (the
 teaching version) or ``Delaunay`` (the fast one).  ``naive_bowyer_watson``
