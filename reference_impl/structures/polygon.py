@@ -186,9 +186,12 @@ def polygon_triangulation(boundary: ArrayLike, holes: Sequence[ArrayLike] | None
     prv = np.arange(n) - 1
     prv[offset[:-1]] = offset[1:] - 1
     flip = (_ring_turns(X, Y, offset, workspace()) > 0) != (np.arange(nrings) == 0)
-    succ = np.where(flip[ring_of], prv, nxt)              # next vertex along the normalised ring
-    ring_idx = [np.arange(offset[r + 1] - 1, offset[r] - 1, -1) if flip[r] else np.arange(offset[r], offset[r + 1])
-                for r in range(nrings)]
+    flipped = flip[ring_of]
+    succ = np.where(flipped, prv, nxt)                    # next vertex along the normalised ring
+    idx = np.arange(n)                                    # the rings' vertices in that order
+    along = np.where(flipped, offset[ring_of] + offset[ring_of + 1] - 1 - idx, idx)
+    bounds = offset.tolist()
+    ring_idx = [along[bounds[r]:bounds[r + 1]] for r in range(nrings)]
     # flood fill from the inside of the boundary, never crossing a constraint edge
     left, free, simp, nb = _free_space(k.tri, k.nbr, k.cid, succ, offset[1])
     if nrings > 1:
