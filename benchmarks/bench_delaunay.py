@@ -1,12 +1,14 @@
 """Benchmark: reference_impl.Delaunay against Triangle and scipy.spatial in the same process.
 
-    python benchmarks/bench_delaunay.py            # full table (about 12 minutes)
+    python benchmarks/bench_delaunay.py            # full table (about 17 minutes)
     python benchmarks/bench_delaunay.py --quick    # 1e2 .. 1e5 uniform only, no start-up checks
     python benchmarks/bench_delaunay.py --sizes 1000000 10000000 --repeat 3
 
 Prints, for uniform random points in the unit square (1e2 .. 1e7 by default), 300
-Gaussian clusters (sigma 1e-3), the 1000x1000 integer grid (every square cocircular)
-and nearly collinear points (a line with 1e-9 noise), the best-of-k wall time of
+Gaussian clusters (sigma 1e-3), the integer grid (every square cocircular), the same grid
+made with ``linspace`` in the unit square (cocircular too, but the coordinate differences are
+not exact doubles: the predicates' fixed-point stage) and nearly collinear points (a line with
+1e-9 noise), the best-of-k wall time of
 
 * ``Delaunay(points).simplices``           (ours: exact predicates, neighbours too)
 * ``triangle.triangulate({'vertices': p})`` (Shewchuk's Triangle, divide and conquer)
@@ -17,8 +19,8 @@ Ours and Triangle run alternately (ours, Triangle, ours, ...) so that machine
 noise hits both alike; scipy runs after them (once from 1e6 points on, where it
 takes ~15 s; not at all from 2e6 on).  From 1e7 points on each runs once.  Then, each in
 a fresh subprocess: peak resident memory for 1e6 and 1e7 points, and the numba start-up cost: a cold compile of every kernel
-(``python -m reference_impl warm`` into an empty cache), then the first
-``Delaunay`` of 1000 points in a new process after that warm-up (import included).
+(``python -m reference_impl warm`` into an empty cache), then, in a new process after that
+warm-up, the import (numpy, numba, reference_impl) and the first ``Delaunay`` of 1000 points.
 """
 from __future__ import annotations
 
@@ -112,8 +114,9 @@ JIT_CODE = textwrap.dedent("""
     t = time.perf_counter()
     import numpy as np
     from reference_impl import Delaunay
+    t1 = time.perf_counter()
     Delaunay(np.random.default_rng(0).random((1000, 2))).simplices
-    print(time.perf_counter() - t)
+    print(t1 - t, time.perf_counter() - t1)
 """)
 
 
@@ -122,7 +125,7 @@ def _sub(code, *args, env=None):
                          env=env, cwd=tempfile.gettempdir(), timeout=1200)
     if out.returncode != 0:
         raise RuntimeError(out.stderr)
-    return float(out.stdout.strip().splitlines()[-1])
+    return [float(v) for v in out.stdout.strip().splitlines()[-1].split()]
 
 
 def inputs(n: int, rng) -> dict[str, np.ndarray]:
@@ -133,6 +136,7 @@ def inputs(n: int, rng) -> dict[str, np.ndarray]:
         "uniform": rng.random((n, 2)),
         "clusters": centres[rng.integers(0, 300, n)] + rng.normal(0, 1e-3, (n, 2)),
         "grid": np.array(np.meshgrid(np.arange(float(k)), np.arange(float(k)))).reshape(2, -1).T.copy(),
+        "float grid": np.array(np.meshgrid(np.linspace(0, 1, k), np.linspace(0, 1, k))).reshape(2, -1).T.copy(),
         "near-line": np.column_stack([t := rng.random(n), 0.5 * t + rng.normal(0, 1e-9, n)]),
     }
 
@@ -149,7 +153,7 @@ def main() -> None:
     args = ap.parse_args()
     sizes = args.sizes or ([100, 1_000, 10_000, 100_000] if args.quick
                            else [100, 1_000, 10_000, 100_000, 1_000_000, 10_000_000])
-    kinds = args.kinds or (["uniform"] if args.quick else ["uniform", "clusters", "grid", "near-line"])
+    kinds = args.kinds or (["uniform"] if args.quick else ["uniform", "clusters", "grid", "float grid", "near-line"])
 
     _ours(np.random.default_rng(1).random((100, 2)))  # compile (or load the cache) before timing
     print(f"python {sys.version.split()[0]}, numpy {np.__version__}, {os.cpu_count()} cpus; best of {args.repeat}")
@@ -167,7 +171,7 @@ def main() -> None:
     if not (args.quick or args.no_startup):
         print("\npeak resident memory, uniform points (MiB above the process's baseline):")
         for n in (1_000_000, 10_000_000):
-            cells = [f"{which} {_sub(MEM_CODE, which, str(n)):8.1f}"
+            cells = [f"{which} {_sub(MEM_CODE, which, str(n))[0]:8.1f}"
                      for which in ("ours", "triangle") + (("scipy",) if n < args.no_scipy_at else ())]
             print(f"  {n:>10,}: " + "   ".join(cells))
 
@@ -179,11 +183,12 @@ def main() -> None:
             cold = time.perf_counter() - t
             if warm.returncode != 0:
                 raise RuntimeError(warm.stderr)
-            first = _sub(JIT_CODE, env=env)
+            imports, first = _sub(JIT_CODE, env=env)
         print("\nnumba start-up:")
         print(f"  cold compile of every kernel (python -m reference_impl warm, empty cache): {cold:6.1f} s")
         print("\n".join("    " + line.strip() for line in warm.stdout.splitlines()[1:-1]))
-        print(f"  after the warm-up, a new process: import + first Delaunay of 1000 points: {first:6.2f} s")
+        print(f"  after the warm-up, a new process: import {imports:5.2f} s, then the first Delaunay of "
+              f"1000 points {first:5.2f} s")
 
 
 if __name__ == "__main__":
