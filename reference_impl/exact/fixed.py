@@ -42,7 +42,8 @@ from numba.extending import intrinsic
 
 from reference_impl.exact.expansion import two_diff
 
-__all__ = ["BITS", "SCRATCH", "NO_ANSWER", "orient_fixed", "incircle_fixed"]
+__all__ = ["BITS", "SCRATCH", "NO_ANSWER", "orient_fixed", "incircle_fixed", "orient_of_parts",
+           "incircle_of_parts"]
 
 BITS = 21
 _MASK = (1 << BITS) - 1
@@ -155,30 +156,38 @@ def _clear(iw, at, n):
         iw[at + i] = 0
 
 
-@njit(cache=True)
-def orient_fixed(ax, ay, bx, by, cx, cy, iw):
-    """Exact sign of orient2d(a, b, c), or ``NO_ANSWER`` when the differences do not fit."""
-    h0, l0 = two_diff(ax, cx)
-    h1, l1 = two_diff(ay, cy)
-    h2, l2 = two_diff(bx, cx)
-    h3, l3 = two_diff(by, cy)
-    m0, k0, lo0, tp0 = _split(h0)
-    m1, k1, lo1, tp1 = _split(h1)
-    m2, k2, lo2, tp2 = _split(h2)
-    m3, k3, lo3, tp3 = _split(h3)
-    n0, j0, lw0, _ = _split(l0)
-    n1, j1, lw1, _ = _split(l1)
-    n2, j2, lw2, _ = _split(l2)
-    n3, j3, lw3, _ = _split(l3)
-    e = min(lo0, lo1, lo2, lo3, lw0, lw1, lw2, lw3)
+@njit(cache=True, inline="always")
+def _load(parts, iw):
+    """Write the three digits of each exact difference ``h + l`` of ``parts`` (a tuple of
+    ``(h, l)`` pairs, as ``two_diff`` returns them) at ``iw[_DIG + 3 i]``.  Returns 1 when done,
+    0 when every difference is zero, ``NO_ANSWER`` when they do not fit."""
+    e = _NONE
+    top = -_NONE
+    for h, l in parts:
+        _, _, lo, tp = _split(h)
+        _, _, lw, _ = _split(l)
+        e = min(e, lo, lw)
+        top = max(top, tp)                      # (|l| is below |h|)
     if e == _NONE:
         return 0
-    if max(tp0, tp1, tp2, tp3) - e > _SPAN:
+    if top - e > _SPAN:
         return NO_ANSWER
-    _digits(m0, k0, n0, j0, e, iw, _DIG)        # acx
-    _digits(m1, k1, n1, j1, e, iw, _DIG + 3)    # acy
-    _digits(m2, k2, n2, j2, e, iw, _DIG + 6)    # bcx
-    _digits(m3, k3, n3, j3, e, iw, _DIG + 9)    # bcy
+    at = _DIG
+    for h, l in parts:
+        mh, kh, _, _ = _split(h)
+        ml, kl, _, _ = _split(l)
+        _digits(mh, kh, ml, kl, e, iw, at)
+        at += 3
+    return 1
+
+
+@njit(cache=True)
+def orient_of_parts(parts, iw):
+    """``orient_fixed`` of the differences ``parts = (acx, acy, bcx, bcy)``, each an exact
+    ``(hi, lo)`` pair (``predicates`` computes them for its earlier stages)."""
+    r = _load(parts, iw)
+    if r != 1:
+        return r
     _clear(iw, _P, 6)
     _product(iw, _DIG, _DIG + 9, _P, 1)          # acx * bcy
     _product(iw, _DIG + 3, _DIG + 6, _P, -1)     # - acy * bcx
@@ -187,38 +196,12 @@ def orient_fixed(ax, ay, bx, by, cx, cy, iw):
 
 
 @njit(cache=True)
-def incircle_fixed(ax, ay, bx, by, cx, cy, dx, dy, iw):
-    """Exact sign of incircle(a, b, c, d), or ``NO_ANSWER`` when the differences do not fit."""
-    # the differences p - d for p = a, b, c (x and y), exactly as hi + lo, hi = m 2**k
-    h0, l0 = two_diff(ax, dx)
-    h1, l1 = two_diff(ay, dy)
-    h2, l2 = two_diff(bx, dx)
-    h3, l3 = two_diff(by, dy)
-    h4, l4 = two_diff(cx, dx)
-    h5, l5 = two_diff(cy, dy)
-    m0, k0, lo0, tp0 = _split(h0)
-    m1, k1, lo1, tp1 = _split(h1)
-    m2, k2, lo2, tp2 = _split(h2)
-    m3, k3, lo3, tp3 = _split(h3)
-    m4, k4, lo4, tp4 = _split(h4)
-    m5, k5, lo5, tp5 = _split(h5)
-    n0, j0, lw0, _ = _split(l0)
-    n1, j1, lw1, _ = _split(l1)
-    n2, j2, lw2, _ = _split(l2)
-    n3, j3, lw3, _ = _split(l3)
-    n4, j4, lw4, _ = _split(l4)
-    n5, j5, lw5, _ = _split(l5)
-    e = min(lo0, lo1, lo2, lo3, lo4, lo5, lw0, lw1, lw2, lw3, lw4, lw5)
-    if e == _NONE:
-        return 0
-    if max(tp0, tp1, tp2, tp3, tp4, tp5) - e > _SPAN:
-        return NO_ANSWER
-    _digits(m0, k0, n0, j0, e, iw, _DIG)
-    _digits(m1, k1, n1, j1, e, iw, _DIG + 3)
-    _digits(m2, k2, n2, j2, e, iw, _DIG + 6)
-    _digits(m3, k3, n3, j3, e, iw, _DIG + 9)
-    _digits(m4, k4, n4, j4, e, iw, _DIG + 12)
-    _digits(m5, k5, n5, j5, e, iw, _DIG + 15)
+def incircle_of_parts(parts, iw):
+    """``incircle_fixed`` of the differences ``parts = (adx, ady, bdx, bdy, cdx, cdy)`` (p - d
+    for p = a, b, c), each an exact ``(hi, lo)`` pair."""
+    r = _load(parts, iw)
+    if r != 1:
+        return r
     _clear(iw, _ACC, 12)
     for r in range(3):
         i = 6 * r                                # point r: x digits at i, y digits at i + 3
@@ -239,3 +222,16 @@ def incircle_fixed(ax, ay, bx, by, cx, cy, dx, dy, iw):
                     iw[_ACC + a + b] += x * iw[_COF + b]
     _normalise(iw, _ACC, 12)
     return _sign(iw, _ACC, 12)
+
+
+@njit(cache=True)
+def orient_fixed(ax, ay, bx, by, cx, cy, iw):
+    """Exact sign of orient2d(a, b, c), or ``NO_ANSWER`` when the differences do not fit."""
+    return orient_of_parts((two_diff(ax, cx), two_diff(ay, cy), two_diff(bx, cx), two_diff(by, cy)), iw)
+
+
+@njit(cache=True)
+def incircle_fixed(ax, ay, bx, by, cx, cy, dx, dy, iw):
+    """Exact sign of incircle(a, b, c, d), or ``NO_ANSWER`` when the differences do not fit."""
+    return incircle_of_parts((two_diff(ax, dx), two_diff(ay, dy), two_diff(bx, dx), two_diff(by, dy),
+                              two_diff(cx, dx), two_diff(cy, dy)), iw)

@@ -49,7 +49,7 @@ from numba import njit
 from reference_impl.exact.expansion import (EPSILON, accumulate, add, certain_sign, compress, diff,
                                             mul, negate, scale, sign, sign_of, two_diff)
 from reference_impl.exact.coldcall import cold
-from reference_impl.exact.fixed import NO_ANSWER, SCRATCH, incircle_fixed, orient_fixed
+from reference_impl.exact.fixed import NO_ANSWER, SCRATCH, incircle_of_parts, orient_of_parts
 from reference_impl.exact.scaling import pow2_scale
 from reference_impl.exact.verify import exact_sign
 from reference_impl.validate import as_xy
@@ -152,7 +152,7 @@ def _orient_exact(ax, ay, bx, by, cx, cy, w):
             and _small_integer(acx, _O_INT) and _small_integer(bcy, _O_INT)
             and _small_integer(acy, _O_INT) and _small_integer(bcx, _O_INT)):
         return sign(acx * bcy - acy * bcx)
-    s = orient_fixed(ax, ay, bx, by, cx, cy, w[_FX:_FX + SCRATCH].view(np.int64))
+    s = orient_of_parts(((acx, t1), (acy, t3), (bcx, t4), (bcy, t2)), w[_FX:_FX + SCRATCH].view(np.int64))
     if s != NO_ANSWER:
         return s
     v = w[_V:_V + 6]
@@ -211,7 +211,8 @@ def _incircle_exact(ax, ay, bx, by, cx, cy, dx, dy, w):
                         + (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady))
     # Stage "fixed point" (fixed.py): the differences as integers at one power-of-two scale
     # (float grids, float rectangles; anything whose differences span at most ~60 bits)
-    s = incircle_fixed(ax, ay, bx, by, cx, cy, dx, dy, w[_FX:_FX + SCRATCH].view(np.int64))
+    s = incircle_of_parts(((adx, t1), (ady, t2), (bdx, t3), (bdy, t4), (cdx, t5), (cdy, t6)),
+                          w[_FX:_FX + SCRATCH].view(np.int64))
     if s != NO_ANSWER:
         return s
     if t1 == 0.0 and t2 == 0.0 and t3 == 0.0 and t4 == 0.0 and t5 == 0.0 and t6 == 0.0:
