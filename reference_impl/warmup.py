@@ -65,6 +65,9 @@ def _exact() -> None:
     orient3d_batch([[0, 0, 0]], [[1, 0, 0]], [[0, 1, 0]], [[0, 0, 1]])
     insphere_batch([[0, 0, 0]], [[1, 0, 0]], [[0, 1, 0]], [[0, 0, -1]], [[5, 5, 5]])
     incircle((1e-300, 0), (1, 0), (0, 1), (1e300, 1))
+    from reference_impl.exact.fixed import SCRATCH, incircle_fixed, orient_fixed   # (float ties)
+    iw = np.zeros(SCRATCH, dtype=np.int64)
+    orient_fixed(0.1, 0.2, 0.2, 0.4, 0.3, 0.6, iw), incircle_fixed(0.1, 0.1, 0.3, 0.1, 0.3, 0.3, 0.1, 0.3, iw)
 
 
 def _voronoi() -> None:
