@@ -17,7 +17,7 @@ expansion arithmetic (``expansion.py``) takes a few microseconds per call.  Here
    signed), and the determinant is computed digit-wise: a product of two digits is below
    ``2**42``, so the sums of a few dozen of them stay far below ``2**63``, and no operation can
    overflow;
-3. carries are propagated (``_normalise``) until every digit but the top one is in
+3. carries are propagated (``normalise``) until every digit but the top one is in
    ``[0, 2**21)``; then the sign of the number is the sign of its top digit, or + when that is
    zero and any digit is not (measured: about 0.1 us a call, against 1-3 us for expansions).
 
@@ -43,7 +43,7 @@ from numba.extending import intrinsic
 from reference_impl.exact.expansion import two_diff
 
 __all__ = ["BITS", "SCRATCH", "NO_ANSWER", "orient_fixed", "incircle_fixed", "orient_of_parts",
-           "incircle_of_parts"]
+           "incircle_of_parts", "load_rows", "mul_add", "normalise", "digits_sign", "clear"]
 
 BITS = 21
 _MASK = (1 << BITS) - 1
@@ -78,12 +78,15 @@ def _exponent_of_power(t):
 
 
 @njit(cache=True, inline="always")
-def _split(v):
-    """v == m * 2**k exactly: returns (m, k, low, top) with m a signed integer of at most 53
-    bits and 2**low, 2**top the lowest and highest set bits of |v| (low = _NONE for zero)."""
-    b = _bits(v)
+def _split(b):
+    """For the double with IEEE-754 bits b (an int64, see ``_bits``), v == m * 2**k exactly:
+    returns (m, k, low, top) with m a signed integer of at most 53 bits and 2**low, 2**top the
+    lowest and highest set bits of |v| (low = _NONE for zero; for infinity, low = -_NONE and
+    top = _NONE, so that the caller's span check fails)."""
     ex = (b >> 52) & 0x7FF
     m = b & ((1 << 52) - 1)
+    if ex == 0x7FF:                             # an overflowed difference (inputs near 1e308):
+        return 0, 0, -_NONE, _NONE              # a span no call fits, so "no answer"
     if ex == 0:                                 # zero or subnormal
         if m == 0:
             return 0, 0, _NONE, -_NONE
@@ -118,16 +121,18 @@ def _digits(mh, kh, ml, kl, e, iw, at):
 
 
 @njit(cache=True, inline="always")
-def _product(iw, a, b, out, sgn):
-    """iw[out:out+5] += sgn * (digits at a) * (digits at b), coefficient by coefficient."""
-    for i in range(3):
+def mul_add(iw, a, la, b, lb, out, sgn):
+    """iw[out + i + j] += sgn * iw[a + i] * iw[b + j] (i < la, j < lb): the coefficients of a
+    product of two digit strings, added in place (the caller bounds their sums)."""
+    for i in range(la):
         x = sgn * iw[a + i]
-        for j in range(3):
-            iw[out + i + j] += x * iw[b + j]
+        if x != 0:
+            for j in range(lb):
+                iw[out + i + j] += x * iw[b + j]
 
 
 @njit(cache=True, inline="always")
-def _normalise(iw, at, n):
+def normalise(iw, at, n):
     """Propagate carries through iw[at:at+n] so that all but the last digit are in
     [0, 2**BITS); the last takes the final carry (it must not overflow: callers size n)."""
     carry = 0
@@ -139,8 +144,8 @@ def _normalise(iw, at, n):
 
 
 @njit(cache=True, inline="always")
-def _sign(iw, at, n):
-    """Sign of a normalised number iw[at:at+n] (see ``_normalise``)."""
+def digits_sign(iw, at, n):
+    """Sign of a normalised number iw[at:at+n] (see ``normalise``)."""
     top = iw[at + n - 1]
     if top != 0:
         return 1 if top > 0 else -1
@@ -151,7 +156,8 @@ def _sign(iw, at, n):
 
 
 @njit(cache=True, inline="always")
-def _clear(iw, at, n):
+def clear(iw, at, n):
+    """iw[at:at+n] = 0."""
     for i in range(n):
         iw[at + i] = 0
 
@@ -160,24 +166,58 @@ def _clear(iw, at, n):
 def _load(parts, iw):
     """Write the three digits of each exact difference ``h + l`` of ``parts`` (a tuple of
     ``(h, l)`` pairs, as ``two_diff`` returns them) at ``iw[_DIG + 3 i]``.  Returns 1 when done,
-    0 when every difference is zero, ``NO_ANSWER`` when they do not fit."""
+    0 when every difference is zero, ``NO_ANSWER`` when they do not fit.  (The 2D predicates'
+    loader: a tuple the compiler unrolls is faster here than ``load_rows``'s array.)"""
     e = _NONE
     top = -_NONE
     for h, l in parts:
-        _, _, lo, tp = _split(h)
-        _, _, lw, _ = _split(l)
+        _, _, lo, tp = _split(_bits(h))
+        _, _, lw, _ = _split(_bits(l))
         e = min(e, lo, lw)
-        top = max(top, tp)                      # (|l| is below |h|)
+        top = max(top, tp)
     if e == _NONE:
         return 0
     if top - e > _SPAN:
         return NO_ANSWER
     at = _DIG
     for h, l in parts:
-        mh, kh, _, _ = _split(h)
-        ml, kl, _, _ = _split(l)
+        mh, kh, _, _ = _split(_bits(h))
+        ml, kl, _, _ = _split(_bits(l))
         _digits(mh, kh, ml, kl, e, iw, at)
         at += 3
+    return 1
+
+
+@njit(cache=True)
+def load_rows(v, nrows, dim, iw, at, tmp):
+    """The 3D stages' loader (``stages3d``): the three digits of each exact difference
+    ``v[dim r + c] - v[dim nrows + c]`` (point r <
+    nrows minus the last point, coordinate c < dim) at ``iw[at + 3 (dim r + c)]``; ``iw[tmp:]``
+    holds the bits of the differences' hi and lo meanwhile (2 dim nrows slots).  Returns 1 when
+    done, 0 when every difference is zero, ``NO_ANSWER`` when they do not fit."""
+    n = dim * nrows
+    e = _NONE
+    top = -_NONE
+    for r in range(nrows):
+        for c in range(dim):
+            s = dim * r + c
+            h, l = two_diff(v[s], v[n + c])
+            bh = _bits(h)
+            bl = _bits(l)
+            iw[tmp + 2 * s] = bh
+            iw[tmp + 2 * s + 1] = bl
+            _, _, lo, tp = _split(bh)
+            _, _, lw, _ = _split(bl)
+            e = min(e, lo, lw)
+            top = max(top, tp)                  # (|l| is below |h|)
+    if e == _NONE:
+        return 0
+    if top - e > _SPAN:
+        return NO_ANSWER
+    for s in range(n):
+        mh, kh, _, _ = _split(iw[tmp + 2 * s])
+        ml, kl, _, _ = _split(iw[tmp + 2 * s + 1])
+        _digits(mh, kh, ml, kl, e, iw, at + 3 * s)
     return 1
 
 
@@ -188,11 +228,11 @@ def orient_of_parts(parts, iw):
     r = _load(parts, iw)
     if r != 1:
         return r
-    _clear(iw, _P, 6)
-    _product(iw, _DIG, _DIG + 9, _P, 1)          # acx * bcy
-    _product(iw, _DIG + 3, _DIG + 6, _P, -1)     # - acy * bcx
-    _normalise(iw, _P, 6)
-    return _sign(iw, _P, 6)
+    clear(iw, _P, 6)
+    mul_add(iw, _DIG, 3, _DIG + 9, 3, _P, 1)     # acx * bcy
+    mul_add(iw, _DIG + 3, 3, _DIG + 6, 3, _P, -1)    # - acy * bcx
+    normalise(iw, _P, 6)
+    return digits_sign(iw, _P, 6)
 
 
 @njit(cache=True)
@@ -202,26 +242,23 @@ def incircle_of_parts(parts, iw):
     r = _load(parts, iw)
     if r != 1:
         return r
-    _clear(iw, _ACC, 12)
+    clear(iw, _ACC, 12)
     for r in range(3):
         i = 6 * r                                # point r: x digits at i, y digits at i + 3
         j = 6 * ((r + 1) % 3)
         k = 6 * ((r + 2) % 3)
-        _clear(iw, _LIFT, 6)
-        _product(iw, i, i, _LIFT, 1)             # x^2 + y^2
-        _product(iw, i + 3, i + 3, _LIFT, 1)
-        _normalise(iw, _LIFT, 6)
-        _clear(iw, _COF, 6)
-        _product(iw, j, k + 3, _COF, 1)          # jx * ky - kx * jy
-        _product(iw, k, j + 3, _COF, -1)
-        _normalise(iw, _COF, 6)
-        for a in range(6):                       # acc += lift * cof: each coefficient gets at
-            x = iw[_LIFT + a]                    # most 6 products below 2**42 from each term
-            if x != 0:
-                for b in range(6):
-                    iw[_ACC + a + b] += x * iw[_COF + b]
-    _normalise(iw, _ACC, 12)
-    return _sign(iw, _ACC, 12)
+        clear(iw, _LIFT, 6)
+        mul_add(iw, i, 3, i, 3, _LIFT, 1)        # x^2 + y^2
+        mul_add(iw, i + 3, 3, i + 3, 3, _LIFT, 1)
+        normalise(iw, _LIFT, 6)
+        clear(iw, _COF, 6)
+        mul_add(iw, j, 3, k + 3, 3, _COF, 1)     # jx * ky - kx * jy
+        mul_add(iw, k, 3, j + 3, 3, _COF, -1)
+        normalise(iw, _COF, 6)
+        mul_add(iw, _LIFT, 6, _COF, 6, _ACC, 1)  # acc += lift * cof: each coefficient gets at
+                                                 # most 6 products below 2**42 from each term
+    normalise(iw, _ACC, 12)
+    return digits_sign(iw, _ACC, 12)
 
 
 @njit(cache=True)

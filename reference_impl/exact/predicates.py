@@ -153,7 +153,7 @@ def _orient_exact(ax, ay, bx, by, cx, cy, w):
             and _small_integer(acy, _O_INT) and _small_integer(bcx, _O_INT)):
         return sign(acx * bcy - acy * bcx)
     s = orient_of_parts(((acx, t1), (acy, t3), (bcx, t4), (bcy, t2)), w[_FX:_FX + SCRATCH].view(np.int64))
-    if s != NO_ANSWER:
+    if s != NO_ANSWER:                     # stage "fixed point"
         return s
     v = w[_V:_V + 6]
     v[0] = ax; v[1] = ay; v[2] = bx; v[3] = by; v[4] = cx; v[5] = cy

@@ -82,7 +82,7 @@ def workspace3d() -> np.ndarray:
     """A scratch array for ``orient3d_nb`` / ``insphere_nb`` (one per thread of work).
 
     >>> workspace3d().shape
-    (103408,)
+    (103538,)
     """
     return np.empty(WORKSPACE3D_SIZE, dtype=np.float64)
 

@@ -8,6 +8,9 @@ their floating-point filter is inconclusive.  The stages, cheapest first:
     of two (grids, integer data: |d| < 2**16 units for orient3d, 2**9 for
     insphere), the float formula has no rounding at all (every intermediate is
     an integer below 2**53 units) and decides;
+(a') if the exact differences, as integers at one power-of-two scale, fit 60 bits
+    (float grids: ``linspace``, 0.1 spacing), the determinant is computed in int64
+    digits (``fixed.py``) and decides;
 (-) if the call mixes magnitudes more than 2**250 (orient3d) or 2**140
     (insphere) apart, so that expansion components could underflow, Python
     integers decide (a numba ``objmode`` block; rare); otherwise every
@@ -47,6 +50,7 @@ from numba import njit
 
 from reference_impl.exact.expansion import (EPSILON, accumulate, add, compress, diff, mul, negate,
                                             sign, sign_of, two_diff)
+from reference_impl.exact.fixed import NO_ANSWER, clear, digits_sign, load_rows, mul_add, normalise
 from reference_impl.exact.scaling import pow2_scale
 from reference_impl.exact.verify import (exact_coordinates_3d, exact_sign, insphere_exact,  # noqa: F401 (re-exported)
                                          orient3d_exact)
@@ -78,7 +82,10 @@ _T2 = 20440        # 9216
 _ACC = 29656       # 36864
 _ACC2 = 66520      # 36864
 _H, _TL = 103384, 103396             # 12 rounded differences and their 12 tails (stage c)
-WORKSPACE3D_SIZE = 103408
+_FX = 103408       # 130: the fixed-point stage, viewed as int64 (offsets below are into that view)
+WORKSPACE3D_SIZE = 103538
+_FD, _FM2, _FM3, _FL, _FA = 0, 36, 72, 108, 114   # digits: 12 differences x 3, six 2x2 minors
+#   x 6, four 3x3 minors x 9, a lift x 6, the sum x 16 (bounds: see _fixed_point)
 
 
 # --------------------------------------------------------------------- floating-point formulas
@@ -397,6 +404,48 @@ def _insphere_expansion(w):
 
 
 @njit(cache=True)
+def _fixed_point(w, nrows):
+    """Stage (a'): the determinant in fixed point (``fixed.py``) when the differences, as
+    integers at one power-of-two scale, fit 60 bits (float grids: ``linspace``, 0.1 spacing);
+    ``NO_ANSWER`` otherwise.  Same minors and signs as the expansions below: 2x2 minors
+    (< 2**121, 6 digits), 3x3 minors (< 2**183, 9 digits), lifts (< 2**122, 6 digits), and
+    for insphere dlift*abc - clift*dab + blift*cda - alift*bcd (< 2**307, 16 digits; each of
+    its coefficients gets at most 24 products of two 21-bit digits)."""
+    iw = w[_FX:_FX + 130].view(np.int64)
+    r = load_rows(w[_V:_V + 3 * nrows + 3], nrows, 3, iw, _FD, _FM3)   # row i: x, y, z at 9i, +3, +6
+    if r != 1:
+        return r
+    q0, nq = (0, 6) if nrows == 4 else (6, 3)
+    for q in range(q0, q0 + nq):                 # x_i y_j - x_j y_i
+        i, j, at = _PAIRS[q, 0], _PAIRS[q, 1], _FM2 + 6 * _PAIRS[q, 2]
+        clear(iw, at, 6)
+        mul_add(iw, _FD + 9 * i, 3, _FD + 9 * j + 3, 3, at, 1)
+        mul_add(iw, _FD + 9 * j, 3, _FD + 9 * i + 3, 3, at, -1)
+        normalise(iw, at, 6)
+    t0, nm = (0, 4) if nrows == 4 else (4, 1)
+    for m in range(nm):                          # sum of sign * z_row * minor2[slot]
+        at = _FM3 + 9 * m
+        clear(iw, at, 9)
+        for u in range(3):
+            row, slot, sg = _TRIPLES[t0 + m, 3 * u], _TRIPLES[t0 + m, 3 * u + 1], _TRIPLES[t0 + m, 3 * u + 2]
+            mul_add(iw, _FD + 9 * row + 6, 3, _FM2 + 6 * slot, 6, at, sg)
+        normalise(iw, at, 9)
+    if nrows == 3:
+        return digits_sign(iw, _FM3, 9)
+    clear(iw, _FA, 16)
+    for step in range(4):
+        r = 3 - step
+        clear(iw, _FL, 6)
+        for c in range(3):                       # lift of row r
+            mul_add(iw, _FD + 9 * r + 3 * c, 3, _FD + 9 * r + 3 * c, 3, _FL, 1)
+        normalise(iw, _FL, 6)
+        m = (0, 3, 2, 1)[step]
+        mul_add(iw, _FL, 6, _FM3 + 9 * m, 9, _FA, 1 if step % 2 == 0 else -1)
+    normalise(iw, _FA, 16)
+    return digits_sign(iw, _FA, 16)
+
+
+@njit(cache=True)
 def _det_perm(t, nrows):
     """The float determinant and permanent of orient3d (nrows 3) or insphere (4) from the
     differences t."""
@@ -417,6 +466,9 @@ def _exact_stages(w, nrows, bits, exact_min, bound_b, bound_c):
     if _small_ints(w, nrows, bits):
         det, _ = _det_perm(w[_I:_I + n], nrows)
         return sign(det)
+    s = _fixed_point(w, nrows)
+    if s != NO_ANSWER:
+        return s
     v = w[_V:_V + n + 3]
     if not pow2_scale(v, exact_min):        # magnitudes too far apart: Python integers
         with numba.objmode(s="int64"):

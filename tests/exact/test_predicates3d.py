@@ -89,7 +89,7 @@ _LATTICE = np.array([(x, y, z) for x in range(-11, 12) for y in range(-11, 12) f
                      if x * x + y * y + z * z == 121], dtype=float)   # 30 integer points, one sphere
 KINDS = ["uniform", "small-int", "coplanar-rounded", "unit-sphere", "int-cospherical",
          "int-coplanar", "ulp-off-tie", "offset-1e9", "scaled-1e300", "scaled-2^k-ties",
-         "mixed-magnitudes", "huge-and-subnormal", "wide-coplanar"]
+         "mixed-magnitudes", "huge-and-subnormal", "wide-coplanar", "float-box"]
 
 
 def make_cases(kind: str, k: int, npts: int, rng: np.random.Generator) -> np.ndarray:
@@ -141,6 +141,13 @@ def make_cases(kind: str, k: int, npts: int, rng: np.random.Generator) -> np.nda
         p = np.concatenate([m, z], axis=2)    # differences need up to 80 bits: inexact
         off = rng.random(k) < 0.5             # half of them: last point one ulp off the plane
         p[off, -1, 2] = np.nextafter(p[off, -1, 2], np.inf)
+        return p
+    if kind == "float-box":            # corners of boxes on a 0.1-spaced grid: ties whose
+        lo = rng.integers(0, 300, (k, 1, 3))                  # differences are not exact doubles
+        hi = lo + rng.integers(1, 4, (k, 1, 3))               # (the fixed-point stage)
+        p = np.where(rng.integers(0, 2, (k, npts, 3)) == 1, hi, lo) * 0.1
+        off = rng.random(k) < 0.3                            # some of them one ulp off
+        p[off, -1, 0] = np.nextafter(p[off, -1, 0], np.inf)
         return p
     raise ValueError(kind)
 
