@@ -8,7 +8,9 @@ Prints best-of-k wall times and the ratio ours/scipy (below 1.0: we are faster) 
 
 * uniform random points in the unit cube: ``Delaunay3D(p)`` against
   ``scipy.spatial.Delaunay(p)``;
-* a k x k x k integer grid (every cube cospherical: the exact stages work);
+* a k x k x k integer grid (every cube cospherical: the exact stages work), and the same grid
+  made with ``linspace`` in the unit cube (ties whose differences are not exact doubles: the
+  predicates' fixed-point stage);
 * random points on the unit sphere: ``SphericalDelaunay(p)`` against
   ``scipy.spatial.ConvexHull(p)``.
 
@@ -74,10 +76,11 @@ def main() -> None:
               f"cavity tets/point {st['cavity_tets'] / n:.1f}")
     for k in (10, 20, 30):
         g = np.array(np.meshgrid(*[np.arange(k)] * 3, indexing="ij"), dtype=float).reshape(3, -1).T
-        best, counts = best_times([("ours", lambda: len(Delaunay3D(g).simplices)),
-                                   ("scipy", lambda: len(scipy.spatial.Delaunay(g).simplices))],
-                                  args.repeat)
-        row(f"grid {k}^3", len(g), best, counts)
+        for name, pts in ((f"grid {k}^3", g), (f"linspace {k}^3", g / (k - 1))):
+            best, counts = best_times([("ours", lambda: len(Delaunay3D(pts).simplices)),
+                                       ("scipy", lambda: len(scipy.spatial.Delaunay(pts).simplices))],
+                                      args.repeat)
+            row(name, len(pts), best, counts)
     for n in sizes:
         v = np.random.default_rng(n).normal(size=(n, 3))
         v /= np.linalg.norm(v, axis=1, keepdims=True)
