@@ -202,7 +202,8 @@ def _incircle_exact(ax, ay, bx, by, cx, cy, dx, dy, w):
     bdy, t4 = two_diff(by, dy)
     cdx, t5 = two_diff(cx, dx)
     cdy, t6 = two_diff(cy, dy)
-    if t1 == 0.0 and t2 == 0.0 and t3 == 0.0 and t4 == 0.0 and t5 == 0.0 and t6 == 0.0:
+    exact = t1 == 0.0 and t2 == 0.0 and t3 == 0.0 and t4 == 0.0 and t5 == 0.0 and t6 == 0.0
+    if exact:
         if (_small_integer(adx, _I_INT) and _small_integer(ady, _I_INT)
                 and _small_integer(bdx, _I_INT) and _small_integer(bdy, _I_INT)
                 and _small_integer(cdx, _I_INT) and _small_integer(cdy, _I_INT)):
@@ -215,7 +216,7 @@ def _incircle_exact(ax, ay, bx, by, cx, cy, dx, dy, w):
                           w[_FX:_FX + SCRATCH].view(np.int64))
     if s != NO_ANSWER:
         return s
-    if t1 == 0.0 and t2 == 0.0 and t3 == 0.0 and t4 == 0.0 and t5 == 0.0 and t6 == 0.0:
+    if exact:
         # Stage "exact differences" (Shewchuk's stage B when its tails are zero): the
         # determinant of the six exact differences, with expansions no longer than 96.
         if (_safe(adx) and _safe(ady) and _safe(bdx) and _safe(bdy) and _safe(cdx)

@@ -82,8 +82,8 @@ _T2 = 20440        # 9216
 _ACC = 29656       # 36864
 _ACC2 = 66520      # 36864
 _H, _TL = 103384, 103396             # 12 rounded differences and their 12 tails (stage c)
-_FX = 103408       # 130: the fixed-point stage, viewed as int64 (offsets below are into that view)
-WORKSPACE3D_SIZE = 103538
+_FX, _FSIZE = 103408, 130          # the fixed-point stage, viewed as int64 (offsets below)
+WORKSPACE3D_SIZE = _FX + _FSIZE
 _FD, _FM2, _FM3, _FL, _FA = 0, 36, 72, 108, 114   # digits: 12 differences x 3, six 2x2 minors
 #   x 6, four 3x3 minors x 9, a lift x 6, the sum x 16 (bounds: see _fixed_point)
 
@@ -411,7 +411,7 @@ def _fixed_point(w, nrows):
     (< 2**121, 6 digits), 3x3 minors (< 2**183, 9 digits), lifts (< 2**122, 6 digits), and
     for insphere dlift*abc - clift*dab + blift*cda - alift*bcd (< 2**307, 16 digits; each of
     its coefficients gets at most 24 products of two 21-bit digits)."""
-    iw = w[_FX:_FX + 130].view(np.int64)
+    iw = w[_FX:_FX + _FSIZE].view(np.int64)
     r = load_rows(w[_V:_V + 3 * nrows + 3], nrows, 3, iw, _FD, _FM3)   # row i: x, y, z at 9i, +3, +6
     if r != 1:
         return r
