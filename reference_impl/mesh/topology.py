@@ -203,14 +203,18 @@ def triangles_left_of(tri: np.ndarray, n: int, u: np.ndarray, v: np.ndarray) -> 
     return np.where(at >= 0, at // 3, -1)
 
 
+@njit(cache=True)
 def vertex_triangles(tri: np.ndarray, n: int) -> np.ndarray:
-    """``vt`` (n,) int64: a triangle having vertex v, -1 for none (as ``find_edge`` wants).
+    """``vt`` (n,) int64: a triangle having vertex v (the last one), -1 for none (as
+    ``find_edge`` wants).  Compiled, so that compiled callers (``constrained._constrain``) use it too.
 
     >>> vertex_triangles(np.array([[0, 1, 2], [0, 2, 3]]), 5).tolist()
     [1, 0, 1, 1, -1]
     """
-    vt = np.full(n, -1, dtype=np.int64)
-    vt[np.asarray(tri).ravel()] = np.repeat(np.arange(len(tri), dtype=np.int64), 3)
+    vt = np.full(n, -1, np.int64)
+    for t in range(tri.shape[0]):
+        for j in range(3):
+            vt[tri[t, j]] = t
     return vt
 
 

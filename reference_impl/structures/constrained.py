@@ -46,7 +46,7 @@ from numpy.typing import ArrayLike
 
 from reference_impl.mesh import status
 from reference_impl.mesh.delaunay import Delaunay
-from reference_impl.mesh.status import CROSSING, LOST
+from reference_impl.mesh.status import CROSSING, LOST, OK
 from reference_impl.mesh.topology import find_edge, flip, slot, third, unique_edges, vertex_triangles
 from reference_impl.validate import as_index_rows
 from reference_impl.exact.predicates import incircle_nb, orient2d_nb, workspace
@@ -140,9 +140,10 @@ def _flip(tri, nbr, cid, vt, t, k):
 
 @njit(cache=True, inline="always")
 def _push(stack, mark, top, t):
-    """Push triangle t on the legalization stack unless it is there already; the new top."""
-    if mark[t] == 0:
-        mark[t] = 1
+    """Push region triangle t on the legalization stack unless it is there already (``mark``
+    2: in the stack, 1: in the region, not in the stack); the new top."""
+    if mark[t] != 2:
+        mark[t] = 2
         stack[top] = t
         top += 1
     return top
@@ -150,25 +151,30 @@ def _push(stack, mark, top, t):
 
 @njit(cache=True, inline="always")
 def _legalize(tri, nbr, cid, vt, X, Y, w, stack, mark, top):
-    """Lawson flips until no triangle in ``stack[:top]`` has a non-constraint edge that is not
-    locally Delaunay.
+    """Lawson flips inside the *region* (the triangles the segment crossed, ``mark`` != 0)
+    until every non-constraint edge between two region triangles is locally Delaunay.
 
-    The stack holds triangle ids, each at most once (``mark[t] == 1`` while t is in it; all
-    marks are 0 again on return), so it never holds more than the m triangles.  A flip
-    changes only the two triangles it rewrites (their ids stay), and every edge whose two
-    sides changed is an edge of one of them, so pushing both keeps the invariant: every
-    triangle with an edge that may be illegal is on the stack.
+    Only those edges need a test: the triangles the new segment does not cross stay
+    constrained Delaunay, and the new triangulation is theirs plus the constrained
+    Delaunay triangulation of the region with its outline fixed (Anglada 1997), which
+    Lawson flips of the region's own edges reach.  Flips keep triangle ids, so the region
+    stays the same set of triangles.  ``stack[:top]`` holds region triangles, each at most
+    once (``mark`` 2 while in it, 1 once out).  Invariant: every region edge that may be
+    illegal has a side in the stack.  A popped triangle tests an edge only when the
+    triangle across is out of the stack (otherwise that one tests it later), so each edge
+    is tested once unless a flip beside it pushes it again; a flip pushes both triangles
+    it rewrote, which hold every edge whose two sides changed.
     """
     while top > 0:
         top -= 1
         t = stack[top]
-        mark[t] = 0
+        mark[t] = 1
         a = tri[t, 0]
         b = tri[t, 1]
         c = tri[t, 2]
         for k in range(3):
             o = nbr[t, k]
-            if o < 0 or cid[t, k] >= 0:
+            if o < 0 or mark[o] != 1 or cid[t, k] >= 0:
                 continue
             q = tri[o, slot(nbr, o, t)]
             if incircle_nb(X[a], Y[a], X[b], Y[b], X[c], Y[c], X[q], Y[q], w) > 0:
@@ -177,6 +183,22 @@ def _legalize(tri, nbr, cid, vt, X, Y, w, stack, mark, top):
                 top = _push(stack, mark, top, o)
                 break
     return top
+
+
+@njit(cache=True, inline="always")
+def _edge_at(tri, nbr, vt, h, u, v):
+    """``find_edge(u, v)``, trying triangle h first (the one that held the edge when it was
+    queued: usually it still does, and the fan walk around u is skipped)."""
+    a = tri[h, 0]
+    b = tri[h, 1]
+    c = tri[h, 2]
+    if (a == u or b == u or c == u) and (a == v or b == v or c == v):
+        if a != u and a != v:
+            return h, 0
+        if b != u and b != v:
+            return h, 1
+        return h, 2
+    return find_edge(tri, nbr, vt, u, v)
 
 
 @njit(cache=True, inline="always")
@@ -227,6 +249,7 @@ def _insert_segment(s, a, b, tri, nbr, cid, vt, X, Y, w, through, err, queue, to
                 return False
             queue[nq, 0] = right
             queue[nq, 1] = left
+            queue[nq, 2] = t
             nq += 1
             t = nbr[t, kc]
             touched[nt] = t
@@ -253,9 +276,10 @@ def _insert_segment(s, a, b, tri, nbr, cid, vt, X, Y, w, through, err, queue, to
         while nq > 0:
             u = queue[head, 0]
             v = queue[head, 1]
+            h = queue[head, 2]
             head = (head + 1) % cap
             nq -= 1
-            t, k = find_edge(tri, nbr, vt, u, v)
+            t, k = _edge_at(tri, nbr, vt, h, u, v)
             o = nbr[t, k]
             p = tri[t, k]
             q = tri[o, third(tri, o, u, v)]
@@ -270,11 +294,13 @@ def _insert_segment(s, a, b, tri, nbr, cid, vt, X, Y, w, through, err, queue, to
                     tail = (head + nq) % cap
                     queue[tail, 0] = p
                     queue[tail, 1] = q
+                    queue[tail, 2] = t
                     nq += 1
             else:
                 tail = (head + nq) % cap
                 queue[tail, 0] = u
                 queue[tail, 1] = v
+                queue[tail, 2] = t
                 nq += 1
                 stall += 1
                 if stall > nq:                       # no flippable edge: cannot happen (Sloan 1993)
@@ -293,13 +319,15 @@ def _insert_segment(s, a, b, tri, nbr, cid, vt, X, Y, w, through, err, queue, to
         for i in range(nt):
             top = _push(stack, mark, top, touched[i])
         _legalize(tri, nbr, cid, vt, X, Y, w, stack, mark, top)
+        for i in range(nt):
+            mark[touched[i]] = 0
         a = e
     return True
 
 
 @njit(cache=True, _nrt=False)
 def _insert_all(tri, nbr, cid, vt, X, Y, seg, through, err, w, ids, queue, touched, stack, mark):
-    """``insert_segments`` on scratch arrays from the caller: ``queue`` (m + 3, 2), ``touched``
+    """``insert_segments`` on scratch arrays from the caller: ``queue`` (m + 3, 3), ``touched``
     and ``stack`` (m + 3,), ``mark`` (m,) all zero.
 
     Compiled without numba's reference counting (as ``mesh/kernel.build``): the helpers are
@@ -338,7 +366,7 @@ def insert_segments(tri, nbr, cid, vt, X, Y, seg, through, err, w, ids=None):
     if ids is None:
         ids = np.arange(seg.shape[0])
     cap = tri.shape[0] + 3
-    queue = np.empty((cap, 2), np.int64)       # crossing edges (at most one per triangle)
+    queue = np.empty((cap, 3), np.int64)       # crossing edges (u, v, a triangle that had it)
     touched = np.empty(cap, np.int64)          # the triangles crossed by one piece of a segment
     stack = np.empty(cap, np.int64)            # legalization: each triangle at most once
     mark = np.zeros(cap, np.int8)
@@ -382,6 +410,35 @@ def canonical_segments(seg, X, Y):
     return oriented, order
 
 
+@njit(cache=True)
+def _constrain(simp, nbrs, rep, segments, pts, w):
+    """``constrain_delaunay`` in one call: copies of the mesh (``simp``, ``nbrs``), the
+    segments' ends mapped through ``rep`` (duplicates to their representatives), put in
+    canonical order and inserted.  Returns ``(tri, nbr, cid, through, err)``; ``err[0]`` is
+    ``OK`` or the kernel's status (then ``err[1:]`` as ``insert_segments`` says)."""
+    m = simp.shape[0]
+    k = segments.shape[0]
+    tri = simp.copy()
+    nbr = nbrs.copy()
+    cid = np.full((m, 3), -1, np.int64)
+    through = np.full(k, -1, np.int64)
+    err = np.zeros(5, np.int64)
+    err[0] = OK
+    if m == 0 or k == 0:
+        return tri, nbr, cid, through, err
+    X = pts[:, 0].copy()
+    Y = pts[:, 1].copy()
+    seg = np.empty((k, 2), np.int64)
+    for i in range(k):
+        seg[i, 0] = rep[segments[i, 0]]
+        seg[i, 1] = rep[segments[i, 1]]
+    # canonical order: each segment from its lexicographically smaller end, sorted by coordinates
+    oriented, order = canonical_segments(seg, X, Y)
+    vt = vertex_triangles(tri, pts.shape[0])
+    insert_segments(tri, nbr, cid, vt, X, Y, oriented, through, err, w, order)
+    return tri, nbr, cid, through, err
+
+
 
 # ----------------------------------------------------------------------------- python API
 class ConstrainedMesh(NamedTuple):
@@ -398,34 +455,19 @@ def constrain_delaunay(d: Delaunay, segments: np.ndarray) -> ConstrainedMesh:
 
     Returns the ``ConstrainedMesh``; a proper crossing is not raised but reported
     in its ``error`` field (``ConstrainedDelaunay`` and ``polygon_triangulation``
-    word the message).
+    word the message).  The work is one compiled call (``_constrain``).
 
     >>> k = constrain_delaunay(Delaunay([(0, 0), (2, -1), (2, 1), (4, 0)]), np.array([[0, 3]]))
     >>> int((k.cid >= 0).sum()), k.error is None
     (2, True)
     """
-    pts = d.points
-    n = len(pts)
-    rep = d.index_map
-    tri = np.ascontiguousarray(d.simplices, dtype=np.int64).copy()
-    nbr = np.ascontiguousarray(d.neighbors, dtype=np.int64).copy()
-    cid = np.full(tri.shape, -1, dtype=np.int64)
-    through = np.full(len(segments), -1, dtype=np.int64)
-    if len(tri) == 0 or len(segments) == 0:
+    tri, nbr, cid, through, err = _constrain(d.simplices, d.neighbors, d.index_map, segments, d.points,
+                                             workspace())
+    if err[0] == status.OK:
         return ConstrainedMesh(tri, nbr, cid, through, None)
-    X = np.ascontiguousarray(pts[:, 0])
-    Y = np.ascontiguousarray(pts[:, 1])
-    # canonical order: each segment from its lexicographically smaller end, sorted by coordinates
-    seg, order = canonical_segments(rep[segments], X, Y)
-    vt = vertex_triangles(tri, n)
-    err = np.zeros(5, dtype=np.int64)
-    err[0] = status.OK                                # the kernel writes CROSSING or LOST here
-    ok = insert_segments(tri, nbr, cid, vt, X, Y, seg, through, err, workspace(), order)
-    if not ok:
-        if status.check(err[0], "constrained Delaunay: the segment walk") != CROSSING:
-            raise status.KernelError(f"constrained Delaunay: the segment walk ended with {status.NAMES[int(err[0])]}")
-        return ConstrainedMesh(tri, nbr, cid, through, (int(err[1]), int(err[2]), int(err[3]), int(err[4])))
-    return ConstrainedMesh(tri, nbr, cid, through, None)
+    if status.check(err[0], "constrained Delaunay: the segment walk") != CROSSING:
+        raise status.KernelError(f"constrained Delaunay: the segment walk ended with {status.NAMES[int(err[0])]}")
+    return ConstrainedMesh(tri, nbr, cid, through, (int(err[1]), int(err[2]), int(err[3]), int(err[4])))
 
 
 def format_point(p) -> str:

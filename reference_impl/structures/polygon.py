@@ -61,7 +61,7 @@ def _winding(p, ring_pts: np.ndarray) -> int:
 
 
 @njit(cache=True)
-def _ring_turns(X, Y, offset, w):
+def _ring_turns(pts, offset, w):
     """Exact orientation of each ring (+1 counter-clockwise), read at its lexicographically
     smallest vertex, which is a convex corner.  Ring r is vertices ``offset[r]:offset[r + 1]``."""
     out = np.empty(offset.shape[0] - 1, np.int64)
@@ -69,34 +69,52 @@ def _ring_turns(X, Y, offset, w):
         lo, hi = offset[r], offset[r + 1]
         v = lo
         for i in range(lo + 1, hi):
-            if X[i] < X[v] or (X[i] == X[v] and Y[i] < Y[v]):
+            if pts[i, 0] < pts[v, 0] or (pts[i, 0] == pts[v, 0] and pts[i, 1] < pts[v, 1]):
                 v = i
         p = v - 1 if v > lo else hi - 1
         q = v + 1 if v + 1 < hi else lo
-        out[r] = orient2d_nb(X[p], Y[p], X[v], Y[v], X[q], Y[q], w)
+        out[r] = orient2d_nb(pts[p, 0], pts[p, 1], pts[v, 0], pts[v, 1], pts[q, 0], pts[q, 1], w)
     return out
 
 
 @njit(cache=True)
-def _free_space(tri, nbr, cid, succ, nb):
+def _free_space(tri, nbr, cid, pts, offset, w):
     """The triangles of the free space, by a flood fill that never crosses a constraint edge.
 
-    ``succ[u]``: the next vertex along u's (normalised) ring, so the free space is left of
-    every ring edge u -> succ[u]; the boundary is vertices ``0 .. nb-1``.  Returns ``left``
-    (the triangle having the directed edge u -> succ[u], -1 if none), ``free`` (triangles
-    reached from the left of a boundary edge), and the free triangles compacted: their
-    vertices and neighbours (-1 across a constraint edge)."""
+    The rings (ring r: vertices ``offset[r]:offset[r + 1]``, the boundary first) are
+    normalised, the boundary counter-clockwise and the holes clockwise, so the free space is
+    left of every ring edge u -> ``succ[u]``.  The fill starts from the triangles left of
+    the boundary edges.  Returns ``along`` (the vertices, each ring in its normalised
+    order), ``bad`` (the first hole, counted from 1, with an edge whose left side is not
+    free space: it is outside the boundary, or inside or around another hole; 0 if none),
+    and the free triangles compacted: their vertices and neighbours (-1 across a
+    constraint edge)."""
+    nrings = offset.shape[0] - 1
+    n = offset[nrings]
+    turns = _ring_turns(pts, offset, w)
+    succ = np.empty(n, np.int64)
+    along = np.empty(n, np.int64)
+    for r in range(nrings):
+        lo, hi = offset[r], offset[r + 1]
+        flipped = (turns[r] > 0) != (r == 0)
+        for i in range(lo, hi):
+            if flipped:
+                succ[i] = i - 1 if i > lo else hi - 1
+                along[i] = lo + hi - 1 - i
+            else:
+                succ[i] = i + 1 if i + 1 < hi else lo
+                along[i] = i
     m = tri.shape[0]
-    left = np.full(succ.shape[0], -1, np.int64)
+    left = np.full(n, -1, np.int64)                 # the triangle left of u -> succ[u]
     for t in range(m):
         for k in range(3):
-            u = tri[t, (k + 1) % 3]
-            if succ[u] == tri[t, (k + 2) % 3]:
+            u = tri[t, k + 1 if k < 2 else 0]
+            if succ[u] == tri[t, k + 2 if k < 1 else k - 1]:
                 left[u] = t
     free = np.zeros(m, np.bool_)
     stack = np.empty(m, np.int64)
     top = 0
-    for u in range(nb):
+    for u in range(offset[1]):
         t = left[u]
         if t >= 0 and not free[t]:
             free[t] = True
@@ -111,6 +129,14 @@ def _free_space(tri, nbr, cid, succ, nb):
                 free[o] = True
                 stack[top] = o
                 top += 1
+    bad = 0
+    r = 1
+    for u in range(offset[1], n):                  # every hole edge must have free space on its left
+        while u >= offset[r + 1]:
+            r += 1
+        if left[u] < 0 or not free[left[u]]:
+            bad = r
+            break
     new = np.full(m, -1, np.int64)
     count = 0
     for t in range(m):
@@ -125,7 +151,14 @@ def _free_space(tri, nbr, cid, succ, nb):
             for k in range(3):
                 simp[r, k] = tri[t, k]
                 nbrs[r, k] = -1 if cid[t, k] >= 0 or nbr[t, k] < 0 else new[nbr[t, k]]
-    return left, free, simp, nbrs
+    return along, bad, simp, nbrs
+
+
+class _ArgumentNames:
+    """The names ``as_rings`` gives the rings in its messages (made only for a bad ring)."""
+
+    def __getitem__(self, i: int) -> str:
+        return "boundary" if i == 0 else f"holes[{i - 1}]"
 
 
 def polygon_triangulation(boundary: ArrayLike, holes: Sequence[ArrayLike] | None = ()) -> PolygonTriangulation:
@@ -149,22 +182,25 @@ def polygon_triangulation(boundary: ArrayLike, holes: Sequence[ArrayLike] | None
         holes = ()
     if isinstance(holes, (str, bytes)):
         raise ValueError("holes must be a sequence of polygons")
-    names = ["boundary"] + [f"hole {h}" for h in range(len(holes))]
-    pts, sizes = as_rings([boundary, *holes], ["boundary"] + [f"holes[{i}]" for i in range(len(holes))])
+    pts, sizes = as_rings([boundary, *holes], _ArgumentNames())
     nrings = len(sizes)
-    offset = np.concatenate([[0], np.cumsum(sizes)])
+    offset = np.zeros(nrings + 1, dtype=np.int64)
+    np.cumsum(sizes, out=offset[1:])
     n = len(pts)
-    ring_of = np.repeat(np.arange(nrings), sizes)
-    local = np.arange(n) - offset[ring_of]
-    nxt = np.arange(n) + 1
+    nxt = np.arange(1, n + 1)
     nxt[offset[1:] - 1] = offset[:-1]
     seg = np.stack([np.arange(n), nxt], axis=1)
 
+    def name(r):
+        return "boundary" if r == 0 else f"hole {r - 1}"
+
     def vname(i):
-        return f"{names[ring_of[i]]} vertex {local[i]} {format_point(pts[i])}"
+        r = int(np.searchsorted(offset, i, side="right")) - 1
+        return f"{name(r)} vertex {i - offset[r]} {format_point(pts[i])}"
 
     def ename(s):
-        return f"{names[ring_of[s]]} edge {local[s]} {format_point(pts[s])}-{format_point(pts[nxt[s]])}"
+        r = int(np.searchsorted(offset, s, side="right")) - 1
+        return f"{name(r)} edge {s - offset[r]} {format_point(pts[s])}-{format_point(pts[nxt[s]])}"
 
     d = Delaunay(pts)
     rep = d.index_map
@@ -181,28 +217,14 @@ def polygon_triangulation(boundary: ArrayLike, holes: Sequence[ArrayLike] | None
     if len(hit):
         s = hit[0]
         raise ValueError(f"polygon is not simple: {vname(k.through[s])} lies on {ename(s)}")
-    # orientation from the lexicographically smallest vertex (a convex corner): boundary CCW, holes CW
-    X, Y = np.ascontiguousarray(pts[:, 0]), np.ascontiguousarray(pts[:, 1])
-    prv = np.arange(n) - 1
-    prv[offset[:-1]] = offset[1:] - 1
-    flip = (_ring_turns(X, Y, offset, workspace()) > 0) != (np.arange(nrings) == 0)
-    flipped = flip[ring_of]
-    succ = np.where(flipped, prv, nxt)                    # next vertex along the normalised ring
-    idx = np.arange(n)                                    # the rings' vertices in that order
-    along = np.where(flipped, offset[ring_of] + offset[ring_of + 1] - 1 - idx, idx)
-    bounds = offset.tolist()
-    ring_idx = [along[bounds[r]:bounds[r + 1]] for r in range(nrings)]
+    # orientation from the lexicographically smallest vertex (a convex corner): boundary CCW, holes CW;
     # flood fill from the inside of the boundary, never crossing a constraint edge
-    left, free, simp, nb = _free_space(k.tri, k.nbr, k.cid, succ, offset[1])
-    if nrings > 1:
-        side, owner = left[offset[1]:], ring_of[offset[1]:]
-        bad = np.flatnonzero((side < 0) | ~free[side])
-        if len(bad):
-            h = int(owner[bad[0]])
-            p = pts[offset[h]]
-            if _winding(p, pts[:offset[1]]) == 0:
-                raise ValueError(f"{names[h]} lies outside the boundary")
-            inside = [g for g in range(1, nrings) if g != h and _winding(p, pts[offset[g]:offset[g + 1]]) != 0]
-            where = f"inside hole {inside[0] - 1}" if inside else "around another hole"
-            raise ValueError(f"{names[h]} lies {where}; holes must be disjoint")
-    return PolygonTriangulation(pts, simp, nb, tuple(ring_idx))
+    along, h, simp, nb = _free_space(k.tri, k.nbr, k.cid, pts, offset, workspace())
+    if h:
+        p = pts[offset[h]]
+        if _winding(p, pts[:offset[1]]) == 0:
+            raise ValueError(f"{name(h)} lies outside the boundary")
+        inside = [g for g in range(1, nrings) if g != h and _winding(p, pts[offset[g]:offset[g + 1]]) != 0]
+        where = f"inside hole {inside[0] - 1}" if inside else "around another hole"
+        raise ValueError(f"{name(h)} lies {where}; holes must be disjoint")
+    return PolygonTriangulation(pts, simp, nb, tuple(np.split(along, offset[1:-1])))
