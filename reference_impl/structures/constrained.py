@@ -202,7 +202,7 @@ def _edge_at(tri, nbr, vt, h, u, v):
 
 
 @njit(cache=True, inline="always")
-def _insert_segment(s, a, b, tri, nbr, cid, vt, X, Y, w, through, err, queue, touched, stack, mark):
+def _insert_segment(s, a, b, tri, nbr, cid, vt, X, Y, w, through, err, queue, touched, stack, mark, side):
     """Insert constraint segment s (its input number: written to ``cid`` and ``through[s]``)
     from vertex a to vertex b.  False on error (see err).
 
@@ -237,6 +237,11 @@ def _insert_segment(s, a, b, tri, nbr, cid, vt, X, Y, w, through, err, queue, to
         right = tri[t, (k + 1) % 3]
         left = tri[t, (k + 2) % 3]
         kc = k                                       # slot (in t) opposite the crossed edge
+        # side[v]: the side of line a-b that vertex v of the crossed region is on (-1 right,
+        # +1 left, 0 on it: a and the end e), kept so that the flips below need no predicate
+        side[a] = 0
+        side[right] = -1
+        side[left] = 1
         nq = 0
         touched[0] = t
         nt = 1
@@ -256,6 +261,7 @@ def _insert_segment(s, a, b, tri, nbr, cid, vt, X, Y, w, through, err, queue, to
             nt += 1
             wv = tri[t, third(tri, t, right, left)]
             o = 0 if wv == b else orient2d_nb(ax, ay, bx, by, X[wv], Y[wv], w)
+            side[wv] = o
             if o == 0:                               # reached b, or a vertex on the segment
                 break
             if o > 0:
@@ -267,8 +273,6 @@ def _insert_segment(s, a, b, tri, nbr, cid, vt, X, Y, w, through, err, queue, to
         e = wv
         if e != b and through[s] < 0:
             through[s] = e
-        ex = X[e]
-        ey = Y[e]
         # --- Sloan: flip the crossing edges away (queue[head:] circularly, nq edges in it)
         head = 0
         stall = 0
@@ -288,9 +292,7 @@ def _insert_segment(s, a, b, tri, nbr, cid, vt, X, Y, w, through, err, queue, to
             if su * sv < 0:                          # strictly convex quadrilateral: flip
                 _flip(tri, nbr, cid, vt, t, k)
                 stall = 0
-                op = 0 if (p == a or p == e) else orient2d_nb(ax, ay, ex, ey, X[p], Y[p], w)
-                oq = 0 if (q == a or q == e) else orient2d_nb(ax, ay, ex, ey, X[q], Y[q], w)
-                if op * oq < 0:
+                if side[p] * side[q] < 0:             # the new diagonal still crosses a-e
                     tail = (head + nq) % cap
                     queue[tail, 0] = p
                     queue[tail, 1] = q
@@ -326,9 +328,9 @@ def _insert_segment(s, a, b, tri, nbr, cid, vt, X, Y, w, through, err, queue, to
 
 
 @njit(cache=True, _nrt=False)
-def _insert_all(tri, nbr, cid, vt, X, Y, seg, through, err, w, ids, queue, touched, stack, mark):
+def _insert_all(tri, nbr, cid, vt, X, Y, seg, through, err, w, ids, queue, touched, stack, mark, side):
     """``insert_segments`` on scratch arrays from the caller: ``queue`` (m + 3, 3), ``touched``
-    and ``stack`` (m + 3,), ``mark`` (m,) all zero.
+    and ``stack`` (m + 3,), ``mark`` (m,) all zero, ``side`` (n,).
 
     Compiled without numba's reference counting (as ``mesh/kernel.build``): the helpers are
     inlined, and each array they receive would otherwise cost an atomic incref/decref pair per
@@ -337,7 +339,7 @@ def _insert_all(tri, nbr, cid, vt, X, Y, seg, through, err, w, ids, queue, touch
     for i in range(seg.shape[0]):
         s = ids[i]
         if not _insert_segment(s, seg[i, 0], seg[i, 1], tri, nbr, cid, vt, X, Y, w, through, err,
-                               queue, touched, stack, mark):
+                               queue, touched, stack, mark, side):
             err[1] = s
             return False
     return True
@@ -370,7 +372,8 @@ def insert_segments(tri, nbr, cid, vt, X, Y, seg, through, err, w, ids=None):
     touched = np.empty(cap, np.int64)          # the triangles crossed by one piece of a segment
     stack = np.empty(cap, np.int64)            # legalization: each triangle at most once
     mark = np.zeros(cap, np.int8)
-    return _insert_all(tri, nbr, cid, vt, X, Y, seg, through, err, w, ids, queue, touched, stack, mark)
+    side = np.zeros(X.shape[0], np.int8)       # per vertex: its side of the segment being inserted
+    return _insert_all(tri, nbr, cid, vt, X, Y, seg, through, err, w, ids, queue, touched, stack, mark, side)
 
 
 @njit(cache=True, inline="always")
