@@ -206,7 +206,7 @@ def triangles_left_of(tri: np.ndarray, n: int, u: np.ndarray, v: np.ndarray) -> 
 @njit(cache=True)
 def vertex_triangles(tri: np.ndarray, n: int) -> np.ndarray:
     """``vt`` (n,) int64: a triangle having vertex v (the last one), -1 for none (as
-    ``find_edge`` wants).  Compiled, so that compiled callers (``constrained._constrain``) use it too.
+    ``find_edge`` wants).  Compiled, so that compiled callers (``constrained._prepare``) use it too.
 
     >>> vertex_triangles(np.array([[0, 1, 2], [0, 2, 3]]), 5).tolist()
     [1, 0, 1, 1, -1]

@@ -414,32 +414,25 @@ def canonical_segments(seg, X, Y):
 
 
 @njit(cache=True)
-def _constrain(simp, nbrs, rep, segments, pts, w):
-    """``constrain_delaunay`` in one call: copies of the mesh (``simp``, ``nbrs``), the
-    segments' ends mapped through ``rep`` (duplicates to their representatives), put in
-    canonical order and inserted.  Returns ``(tri, nbr, cid, through, err)``; ``err[0]`` is
-    ``OK`` or the kernel's status (then ``err[1:]`` as ``insert_segments`` says)."""
-    m = simp.shape[0]
+def _prepare(simp, nbrs, rep, segments, pts):
+    """``constrain_delaunay``'s set-up in one call: copies of the mesh (``simp``, ``nbrs``),
+    the constraint and error arrays, the coordinates as columns, the vertex -> triangle map,
+    and the segments' ends mapped through ``rep`` (duplicates to their representatives) in
+    canonical order (``canonical_segments``).  (``insert_segments`` is called apart: a
+    compiled caller would compile its code again, predicates included, at every cold start.)"""
     k = segments.shape[0]
-    tri = simp.copy()
-    nbr = nbrs.copy()
-    cid = np.full((m, 3), -1, np.int64)
-    through = np.full(k, -1, np.int64)
-    err = np.zeros(5, np.int64)
-    err[0] = OK
-    if m == 0 or k == 0:
-        return tri, nbr, cid, through, err
-    X = pts[:, 0].copy()
-    Y = pts[:, 1].copy()
     seg = np.empty((k, 2), np.int64)
     for i in range(k):
         seg[i, 0] = rep[segments[i, 0]]
         seg[i, 1] = rep[segments[i, 1]]
-    # canonical order: each segment from its lexicographically smaller end, sorted by coordinates
+    X = pts[:, 0].copy()
+    Y = pts[:, 1].copy()
     oriented, order = canonical_segments(seg, X, Y)
-    vt = vertex_triangles(tri, pts.shape[0])
-    insert_segments(tri, nbr, cid, vt, X, Y, oriented, through, err, w, order)
-    return tri, nbr, cid, through, err
+    tri = simp.copy()
+    err = np.zeros(5, np.int64)
+    err[0] = OK
+    return (tri, nbrs.copy(), np.full(simp.shape, -1, np.int64), np.full(k, -1, np.int64), err, X, Y,
+            oriented, order, vertex_triangles(tri, pts.shape[0]))
 
 
 
@@ -458,14 +451,16 @@ def constrain_delaunay(d: Delaunay, segments: np.ndarray) -> ConstrainedMesh:
 
     Returns the ``ConstrainedMesh``; a proper crossing is not raised but reported
     in its ``error`` field (``ConstrainedDelaunay`` and ``polygon_triangulation``
-    word the message).  The work is one compiled call (``_constrain``).
+    word the message).  The work is two compiled calls (``_prepare``, ``insert_segments``).
 
     >>> k = constrain_delaunay(Delaunay([(0, 0), (2, -1), (2, 1), (4, 0)]), np.array([[0, 3]]))
     >>> int((k.cid >= 0).sum()), k.error is None
     (2, True)
     """
-    tri, nbr, cid, through, err = _constrain(d.simplices, d.neighbors, d.index_map, segments, d.points,
-                                             workspace())
+    tri, nbr, cid, through, err, X, Y, seg, order, vt = _prepare(d.simplices, d.neighbors, d.index_map,
+                                                                 segments, d.points)
+    if len(tri) and len(seg):
+        insert_segments(tri, nbr, cid, vt, X, Y, seg, through, err, workspace(), order)
     if err[0] == status.OK:
         return ConstrainedMesh(tri, nbr, cid, through, None)
     if status.check(err[0], "constrained Delaunay: the segment walk") != CROSSING:

@@ -78,11 +78,12 @@ def _ring_turns(pts, offset, w):
 
 
 @njit(cache=True)
-def _free_space(tri, nbr, cid, pts, offset, w):
+def _free_space(tri, nbr, cid, offset, turns):
     """The triangles of the free space, by a flood fill that never crosses a constraint edge.
 
-    The rings (ring r: vertices ``offset[r]:offset[r + 1]``, the boundary first) are
-    normalised, the boundary counter-clockwise and the holes clockwise, so the free space is
+    The rings (ring r: vertices ``offset[r]:offset[r + 1]``, the boundary first; ``turns``:
+    their orientations, ``_ring_turns``) are normalised, the boundary counter-clockwise and
+    the holes clockwise, so the free space is
     left of every ring edge u -> ``succ[u]``.  The fill starts from the triangles left of
     the boundary edges.  Returns ``along`` (the vertices, each ring in its normalised
     order), ``bad`` (the first hole, counted from 1, with an edge whose left side is not
@@ -91,7 +92,6 @@ def _free_space(tri, nbr, cid, pts, offset, w):
     constraint edge)."""
     nrings = offset.shape[0] - 1
     n = offset[nrings]
-    turns = _ring_turns(pts, offset, w)
     succ = np.empty(n, np.int64)
     along = np.empty(n, np.int64)
     for r in range(nrings):
@@ -219,7 +219,7 @@ def polygon_triangulation(boundary: ArrayLike, holes: Sequence[ArrayLike] | None
         raise ValueError(f"polygon is not simple: {vname(k.through[s])} lies on {ename(s)}")
     # orientation from the lexicographically smallest vertex (a convex corner): boundary CCW, holes CW;
     # flood fill from the inside of the boundary, never crossing a constraint edge
-    along, h, simp, nb = _free_space(k.tri, k.nbr, k.cid, pts, offset, workspace())
+    along, h, simp, nb = _free_space(k.tri, k.nbr, k.cid, offset, _ring_turns(pts, offset, workspace()))
     if h:
         p = pts[offset[h]]
         if _winding(p, pts[:offset[1]]) == 0:
