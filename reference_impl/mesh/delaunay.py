@@ -46,7 +46,8 @@ import numbers
 import numpy as np
 
 from reference_impl.mesh import kernel, removal, status
-from reference_impl.mesh.ordering import SMALL, insertion_order
+from reference_impl.mesh.ordering import SMALL, insertion_order, line_order
+from reference_impl.mesh.status import BUDGET, FLAT
 from reference_impl.mesh.topology import unique_edges, vertex_adjacency
 from reference_impl.validate import as_point, as_points, as_queries
 from reference_impl.exact.predicates import orient2d_nb, workspace
@@ -163,16 +164,25 @@ class Delaunay:
         """Triangulate the live input points from scratch (one compiled call, ``kernel.triangulate``)."""
         pts = self.points
         small = len(pts) - self._nremoved < SMALL     # small: the order is computed in the call,
-        if self._nremoved:                            # and the triangles are extracted at once
+        budget = 0                                    # and the triangles are extracted at once
+        if self._nremoved:
             live = np.flatnonzero(~self._removed[:self._npts])
             order, hints = insertion_order(pts[live], with_hints=True)
             order = live[order]
         elif small:
-            order, hints = _NO_ORDER, _NO_ORDER
+            order, hints = _NO_ORDER, _NO_ORDER       # (the call picks the order, as below)
         else:
+            order = line_order(np.ascontiguousarray(pts[:, 0]), np.ascontiguousarray(pts[:, 1]))
+            if len(order):                            # a thin strip: sorted order, work capped
+                hints, budget = _NO_ORDER, kernel.line_budget(len(order))
+            else:
+                order, hints = insertion_order(pts, with_hints=True)
+        built = kernel.triangulate(pts, order, hints, small and not self._nremoved, small, budget)
+        if built[0] == BUDGET:                        # sorted order was too slow here: BRIO
             order, hints = insertion_order(pts, with_hints=True)
-        (self._flat, order, self._P, self._M, self._start_of, self._state, self._dup,
-         simp, rep) = kernel.triangulate(pts, order, hints, small and not self._nremoved, small)
+            built = kernel.triangulate(pts, order, hints, False, small, 0)
+        (code, order, self._P, self._M, self._start_of, self._state, self._dup, simp, rep) = built
+        self._flat = code == FLAT
         self._cap_v, self._cap_t = len(self._P), len(self._M) // kernel.RECORD
         self._start_of = None      # the build's vertex -> triangle map: see _vertex_map
         self._scratch = self._work = None

@@ -50,9 +50,9 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from reference_impl.mesh.ordering import small_order
+from reference_impl.mesh.ordering import line_order, small_order
 from reference_impl.exact.predicates import WORKSPACE_SIZE, incircle_nb, orient2d_nb
-from reference_impl.mesh.status import OK
+from reference_impl.mesh.status import BUDGET, FLAT, OK
 
 INF = -1
 DEAD = -2
@@ -296,9 +296,11 @@ def seed(a, b, c, P, M, state, w):
 
 
 @njit(cache=True, _nrt=False)
-def build(P, M, stack, bad, ba, bb, bo, start_of, state, dup, hints, w):
+def build(P, M, stack, bad, ba, bb, bo, start_of, state, dup, hints, w, budget):
     """Triangulate vertices 0..n-1 in index order.  ``dup[i]`` receives the vertex that i
-    duplicates (or -1).  Returns False when every point is collinear (nothing built).
+    duplicates (or -1).  Returns ``OK``, or ``FLAT`` when every point is collinear (nothing
+    built), or ``BUDGET`` when ``budget > 0`` and the conflict tests and walk steps so far
+    exceed it (the mesh is then unfinished: the caller builds again in another order).
 
     ``hints[p]`` (``ordering.walk_hints``; -1 for none) is an earlier vertex near p: the walk
     for p starts beside it when it is closer to p than the last inserted vertex is.  For that,
@@ -323,14 +325,14 @@ def build(P, M, stack, bad, ba, bb, bo, start_of, state, dup, hints, w):
             i1 = i
             break
     if i1 < 0:
-        return False
+        return FLAT
     i2 = -1
     for i in range(i1 + 1, n):
         if orient2d_nb(P[0, 0], P[0, 1], P[i1, 0], P[i1, 1], P[i, 0], P[i, 1], w) != 0:
             i2 = i
             break
     if i2 < 0:
-        return False
+        return FLAT
     seed(0, i1, i2, P, M, state, w)
     start_of[1] = start_of[i1 + 1] = start_of[i2 + 1] = 0      # the seed triangle
     last = i2
@@ -349,24 +351,23 @@ def build(P, M, stack, bad, ba, bb, bo, start_of, state, dup, hints, w):
         start_of[p + 1] = state[S_LAST]     # incident to p (to its duplicate's star when dup)
         if dup[p] < 0:
             last = p                        # state[S_LAST] is a triangle of the last inserted
-    return True
+        if budget > 0 and state[S_TESTS] + state[S_STEPS] > budget:
+            return BUDGET
+    return OK
+
+
+@njit(cache=True, inline="always")
+def line_budget(n):
+    """The work (conflict tests + walk steps) a build in ``ordering.line_order`` may take
+    before it is abandoned for the BRIO order: about three times what a thin strip needs
+    (8.3 a point on a line with 1e-9 noise), so a bad case for sorted order costs at most
+    about twice a build rather than quadratic time."""
+    return 24 * n + 1024
 
 
 @njit(cache=True)
-def triangulate(pts, order, hints, compute_order, extract_now):
-    """All of ``Delaunay(points)`` in one compiled call (the fixed cost of many small calls
-    from Python is larger than the work below a few thousand points).
-
-    ``pts``: (n, 2) validated input; ``order``, ``hints``: the insertion order (indices into
-    ``pts``) and its walk hints (``ordering.insertion_order(..., with_hints=True)``); with
-    ``compute_order`` both are computed here instead, by ``ordering.small_order``.  Allocates
-    the mesh for ``pts[order]`` and builds it; with ``extract_now`` also the output triangles.
-    Returns ``(flat, order, P, M, start_of, state, dup, simplices, rep)`` (the cavity
-    scratch stays here: every array returned costs its boxing, about 0.5 us); ``flat`` is
-    True when nothing was built (fewer than three points, or all collinear), and
-    ``simplices``/``rep`` are empty unless extracted."""
-    if compute_order:
-        order, hints = small_order(pts[:, 0].copy(), pts[:, 1].copy(), True)
+def _built(pts, order, hints, budget):
+    """``build`` of ``pts[order]`` on new arrays: ``(code, P, M, start_of, state, dup)``."""
     n = order.shape[0]
     nv = max(n, 4)
     nt = 2 * n + 8
@@ -384,15 +385,50 @@ def triangulate(pts, order, hints, compute_order, extract_now):
     state = np.zeros(STATE_SIZE, dtype=np.int64)
     dup = np.full(nv, -1, dtype=np.int32)
     w = np.empty(WORKSPACE_SIZE)
-    flat = n < 3 or not build(P[:n], M, stack, bad, ba, bb, bo, start_of, state, dup, hints, w)
-    if flat:
+    code = FLAT if n < 3 else build(P[:n], M, stack, bad, ba, bb, bo, start_of, state, dup, hints, w, budget)
+    return code, P, M, start_of, state, dup
+
+
+@njit(cache=True)
+def triangulate(pts, order, hints, compute_order, extract_now, budget):
+    """All of ``Delaunay(points)`` in one compiled call (the fixed cost of many small calls
+    from Python is larger than the work below a few thousand points).
+
+    ``pts``: (n, 2) validated input; ``order``, ``hints``: the insertion order (indices into
+    ``pts``) and its walk hints (``ordering.insertion_order(..., with_hints=True)``), built
+    with work ``budget`` (0: none; see ``build``).  With ``compute_order`` both are computed
+    here instead: ``ordering.line_order`` for a thin strip (its work capped by ``budget``, or
+    by ``line_budget`` when that is 0; then ``small_order`` if the cap is reached), else
+    ``ordering.small_order``.  Allocates the mesh for
+    ``pts[order]`` and builds it; with ``extract_now`` also the output triangles.
+    Returns ``(code, order, P, M, start_of, state, dup, simplices, rep)`` (the cavity
+    scratch stays here: every array returned costs its boxing, about 0.5 us); ``code`` is
+    ``OK``, ``FLAT`` when nothing was built (fewer than three points, or all collinear), or
+    ``BUDGET`` (the caller builds again in the BRIO order); ``simplices``/``rep`` are empty
+    unless extracted."""
+    if compute_order:
+        x = pts[:, 0].copy()
+        y = pts[:, 1].copy()
+        order = line_order(x, y)
+        hints = order[:0]
+        if budget <= 0:
+            budget = line_budget(order.shape[0])
+        if order.shape[0] == 0:
+            order, hints = small_order(x, y, True)
+            budget = 0
+    code, P, M, start_of, state, dup = _built(pts, order, hints, budget)
+    if code == BUDGET and compute_order:
+        order, hints = small_order(pts[:, 0].copy(), pts[:, 1].copy(), True)
+        code, P, M, start_of, state, dup = _built(pts, order, hints, 0)
+    n = order.shape[0]
+    if code == FLAT:
         dup[:] = -1                  # (flat results are computed from the coordinates)
     simp = np.empty((0, 3), dtype=np.int64)
     rep = np.empty(0, dtype=np.int64)
-    if extract_now and not flat:
+    if extract_now and code == OK:
         rep = smallest_labels(order, dup[:n])     # (= order when there are no duplicates)
         simp = extract(M, state[S_NTRI], rep)
-    return flat, order, P, M, start_of, state, dup, simp, rep
+    return code, order, P, M, start_of, state, dup, simp, rep
 
 
 @njit(cache=True)

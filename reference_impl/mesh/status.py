@@ -15,6 +15,8 @@ CROSSING   two input segments properly cross: the user's input          raises `
                                                                         naming the two segments
 LOST       a walk or a sanity check failed: never expected, and the     ``check`` raises
            mesh is left as it was                                      ``KernelError``
+BUDGET     a build in a cheap but risky order ran past its work cap     builds again in the safe
+           (``kernel.build``; the mesh is unfinished)                  (BRIO) order
 =========  ==========================================================  ==========================
 
 Used by ``kernel`` and ``removal`` (2D), ``kernel3d`` (3D) and the constrained
@@ -34,8 +36,9 @@ GROW = -3
 FLAT = -4
 CROSSING = -5
 LOST = -6
+BUDGET = -7
 
-NAMES = {OK: "OK", GROW: "GROW", FLAT: "FLAT", CROSSING: "CROSSING", LOST: "LOST"}
+NAMES = {OK: "OK", GROW: "GROW", FLAT: "FLAT", CROSSING: "CROSSING", LOST: "LOST", BUDGET: "BUDGET"}
 
 
 class KernelError(RuntimeError):

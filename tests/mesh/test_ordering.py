@@ -1,5 +1,5 @@
 """The insertion order's walk hints (``ordering.walk_hints``) against brute force, and the
-walk they shorten.
+walk they shorten; the sorted order of thin strips (``ordering.line_order``) and its work cap.
 
 Run: python -m pytest tests/mesh/test_ordering.py -q
 """
@@ -12,7 +12,8 @@ import pointsets
 from reference_impl import Delaunay
 from reference_impl.exact.verify import check_delaunay
 from reference_impl.mesh import kernel
-from reference_impl.mesh.ordering import insertion_order, _order_keys
+from reference_impl.mesh.ordering import SMALL, insertion_order, line_order, _order_keys
+from reference_impl.mesh.status import BUDGET, OK
 
 
 def _rounds_and_indices(points, order):
@@ -51,7 +52,7 @@ def test_hints_shorten_the_walk_on_a_nearly_straight_line():
     order, hints = insertion_order(pts, with_hints=True)
     steps = {}
     for name, h in (("hints", hints), ("none", np.full_like(hints, -1))):
-        out = kernel.triangulate(pts, order, h, False, True)
+        out = kernel.triangulate(pts, order, h, False, True, 0)
         state, simplices = out[5], out[7]
         steps[name] = state[kernel.S_STEPS] / len(pts)
         assert check_delaunay(pts, simplices)[0]
@@ -65,3 +66,66 @@ def test_a_hint_to_a_duplicate_still_starts_the_walk_in_the_mesh():
     d = Delaunay(pts)
     assert check_delaunay(pts, d.simplices)[0]
     assert (d.index_map[3000:4500] == np.arange(1500)).all()
+
+
+# ----------------------------------------------------------------------------- thin strips
+def _flat_curve(n):
+    """A thin but curved set on which sorted insertion is quadratic (y = 1e-4 x^4)."""
+    x = np.linspace(0.0, 1.0, n)
+    return np.column_stack([x, 1e-4 * x ** 4])
+
+
+def _columns(p):
+    return np.ascontiguousarray(p[:, 0]), np.ascontiguousarray(p[:, 1])
+
+
+def test_line_order_only_for_thin_sets_and_independent_of_input_order():
+    rng = np.random.default_rng(3)
+    line = nearly_collinear(500)
+    order = line_order(*_columns(line))
+    assert len(order) == 500 and np.all(np.diff(line[order, 0]) >= 0)
+    steep = line[:, ::-1].copy()                               # along y: sorted by y
+    assert np.all(np.diff(steep[line_order(*_columns(steep)), 1]) >= 0)
+    assert len(line_order(*_columns(rng.random((500, 2))))) == 0
+    assert len(line_order(*_columns(np.column_stack([np.linspace(0, 1, 500), np.full(500, 0.01)])))) == 500
+    wide = np.column_stack([np.linspace(0, 1, 500), 0.01 * (np.arange(500) % 2)])   # gap 0.01 x 500 > 1
+    assert len(line_order(*_columns(wide))) == 0
+    perm = rng.permutation(500)
+    again = line_order(*_columns(line[perm]))
+    assert np.array_equal(line[perm][again], line[order])
+
+
+@pytest.mark.parametrize("n", [2000, 2 * SMALL])             # the compiled path and the Python one
+def test_sorted_build_that_runs_past_its_cap_starts_again_in_brio_order(n):
+    pts = _flat_curve(n)
+    order = line_order(*_columns(pts))
+    assert len(order) == n                                     # thin: sorted order is tried
+    empty = np.empty(0, dtype=np.int64)
+    assert kernel.triangulate(pts, order, empty, False, False, kernel.line_budget(n))[0] == BUDGET
+    uncapped = kernel.triangulate(pts, order, empty, False, False, 0)[5]
+    assert uncapped[kernel.S_TESTS] > 100 * n                   # quadratic without the cap
+    d = Delaunay(pts)
+    assert check_delaunay(pts, d.simplices)[0]
+    assert d._state[kernel.S_TESTS] < uncapped[kernel.S_TESTS] / 10    # the BRIO build, not the sorted one
+
+
+def test_cap_of_one_forces_the_brio_order_in_the_compiled_path():
+    pts = nearly_collinear(300)
+    code, order, *_, simplices, _rep = kernel.triangulate(pts, np.empty(0, np.int64), np.empty(0, np.int64),
+                                                          True, True, 1)
+    assert code == OK and check_delaunay(pts, simplices)[0]
+    brio = insertion_order(pts)
+    assert np.array_equal(order, brio)                          # not the sorted order
+    assert not np.array_equal(order, line_order(*_columns(pts)))
+
+
+@pytest.mark.parametrize("n", [1000, 3 * SMALL])
+def test_two_row_grid_ties_do_not_depend_on_input_order(n):
+    x = np.linspace(0.0, 1.0, n // 2)
+    pts = np.vstack([np.column_stack([x, np.zeros_like(x)]), np.column_stack([x, np.full_like(x, 1e-7)])])
+    assert len(line_order(*_columns(pts))) == len(pts)            # thin, and every rectangle cocircular
+    perm = np.random.default_rng(5).permutation(len(pts))
+    a, b = Delaunay(pts), Delaunay(pts[perm])
+    assert check_delaunay(pts, a.simplices)[0]
+    as_set = lambda p, s: {frozenset(map(tuple, p[t].tolist())) for t in s}   # noqa: E731
+    assert as_set(pts, a.simplices) == as_set(pts[perm], b.simplices)
