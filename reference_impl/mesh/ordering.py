@@ -11,6 +11,10 @@ by coordinates, so the order depends only on the *set* of points, never on the
 order they were given in: that is what makes degenerate outputs (cocircular
 ties) identical for any permutation of the input.
 
+One exception: a thin strip of points (``line_order``) is inserted in plain sorted order
+along it, which there does half BRIO's work; the kernel caps that work and falls back to
+BRIO (``kernel.line_budget``), because sorted order can be quadratic.
+
 >>> import numpy as np
 >>> pts = np.array([[0.0, 0.0], [1.0, 1.0], [0.0, 1.0], [1.0, 0.0]])
 >>> sorted(insertion_order(pts).tolist())
