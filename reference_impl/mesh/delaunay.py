@@ -172,7 +172,7 @@ class Delaunay:
         elif small:
             order, hints = _NO_ORDER, _NO_ORDER       # (the call picks the order, as below)
         else:
-            order = line_order(np.ascontiguousarray(pts[:, 0]), np.ascontiguousarray(pts[:, 1]))
+            order = line_order(pts)
             if len(order):                            # a thin strip: sorted order, work capped
                 hints, budget = _NO_ORDER, kernel.line_budget(len(order))
             else:

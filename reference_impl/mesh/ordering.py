@@ -158,8 +158,8 @@ def _order_keys(x, y, brio):
 
 
 @njit(cache=True)
-def line_order(x, y):
-    """For points along a thin strip, the order along it; otherwise an empty array.
+def line_order(pts):
+    """For points ``pts`` (n, 2) along a thin strip, the order along it; otherwise an empty array.
 
     *Thin*: the strip's width (the farthest point from the line through the lexicographically
     first and last points, along the bounding box's longer side) times the number of points
@@ -176,37 +176,40 @@ def line_order(x, y):
     3996 conflict tests a point).
 
     >>> import numpy as np
-    >>> line_order(np.array([2.0, 0.0, 1.0]), np.array([1.0, 0.0, 0.5 + 1e-9])).tolist()
+    >>> line_order(np.array([[2.0, 1.0], [0.0, 0.0], [1.0, 0.5 + 1e-9]])).tolist()
     [1, 2, 0]
-    >>> line_order(np.array([0.0, 1.0, 0.0]), np.array([0.0, 0.0, 1.0])).tolist()
+    >>> line_order(np.array([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]])).tolist()
     []
     """
-    n = x.shape[0]
+    n = pts.shape[0]
     none = np.empty(0, np.int64)
     if n < 3:
         return none
-    xmin = xmax = x[0]
-    ymin = ymax = y[0]
+    xmin = xmax = pts[0, 0]
+    ymin = ymax = pts[0, 1]
     for i in range(1, n):
-        xmin = min(xmin, x[i])
-        xmax = max(xmax, x[i])
-        ymin = min(ymin, y[i])
-        ymax = max(ymax, y[i])
-    u, v = (x, y) if xmax - xmin >= ymax - ymin else (y, x)
+        xmin = min(xmin, pts[i, 0])
+        xmax = max(xmax, pts[i, 0])
+        ymin = min(ymin, pts[i, 1])
+        ymax = max(ymax, pts[i, 1])
+    c = 0 if xmax - xmin >= ymax - ymin else 1       # the longer side's coordinate
     a = 0
     b = 0
     for i in range(1, n):
-        if u[i] < u[a] or (u[i] == u[a] and v[i] < v[a]):
+        if pts[i, c] < pts[a, c] or (pts[i, c] == pts[a, c] and pts[i, 1 - c] < pts[a, 1 - c]):
             a = i
-        if u[i] > u[b] or (u[i] == u[b] and v[i] > v[b]):
+        if pts[i, c] > pts[b, c] or (pts[i, c] == pts[b, c] and pts[i, 1 - c] > pts[b, 1 - c]):
             b = i
-    dx = x[b] - x[a]
-    dy = y[b] - y[a]
+    dx = pts[b, 0] - pts[a, 0]
+    dy = pts[b, 1] - pts[a, 1]
     wide = 0.0                                       # |B - A| times the largest distance
     for i in range(n):
-        wide = max(wide, abs(dx * (y[i] - y[a]) - dy * (x[i] - x[a])))
+        wide = max(wide, abs(dx * (pts[i, 1] - pts[a, 1]) - dy * (pts[i, 0] - pts[a, 0])))
     if not wide * n < dx * dx + dy * dy:             # (NaN or overflow: not thin)
         return none
+    x = pts[:, 0].copy()
+    y = pts[:, 1].copy()
+    u = x if c == 0 else y
     order = np.argsort(u)
     _fix_ties(order, u[order], x, y)
     return order

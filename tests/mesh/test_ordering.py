@@ -75,30 +75,26 @@ def _flat_curve(n):
     return np.column_stack([x, 1e-4 * x ** 4])
 
 
-def _columns(p):
-    return np.ascontiguousarray(p[:, 0]), np.ascontiguousarray(p[:, 1])
-
-
 def test_line_order_only_for_thin_sets_and_independent_of_input_order():
     rng = np.random.default_rng(3)
     line = nearly_collinear(500)
-    order = line_order(*_columns(line))
+    order = line_order(line)
     assert len(order) == 500 and np.all(np.diff(line[order, 0]) >= 0)
     steep = line[:, ::-1].copy()                               # along y: sorted by y
-    assert np.all(np.diff(steep[line_order(*_columns(steep)), 1]) >= 0)
-    assert len(line_order(*_columns(rng.random((500, 2))))) == 0
-    assert len(line_order(*_columns(np.column_stack([np.linspace(0, 1, 500), np.full(500, 0.01)])))) == 500
+    assert np.all(np.diff(steep[line_order(steep), 1]) >= 0)
+    assert len(line_order((rng.random((500, 2))))) == 0
+    assert len(line_order((np.column_stack([np.linspace(0, 1, 500), np.full(500, 0.01)])))) == 500
     wide = np.column_stack([np.linspace(0, 1, 500), 0.01 * (np.arange(500) % 2)])   # gap 0.01 x 500 > 1
-    assert len(line_order(*_columns(wide))) == 0
+    assert len(line_order(wide)) == 0
     perm = rng.permutation(500)
-    again = line_order(*_columns(line[perm]))
+    again = line_order(line[perm])
     assert np.array_equal(line[perm][again], line[order])
 
 
 @pytest.mark.parametrize("n", [2000, 2 * SMALL])             # the compiled path and the Python one
 def test_sorted_build_that_runs_past_its_cap_starts_again_in_brio_order(n):
     pts = _flat_curve(n)
-    order = line_order(*_columns(pts))
+    order = line_order(pts)
     assert len(order) == n                                     # thin: sorted order is tried
     empty = np.empty(0, dtype=np.int64)
     assert kernel.triangulate(pts, order, empty, False, False, kernel.line_budget(n))[0] == BUDGET
@@ -116,14 +112,14 @@ def test_cap_of_one_forces_the_brio_order_in_the_compiled_path():
     assert code == OK and check_delaunay(pts, simplices)[0]
     brio = insertion_order(pts)
     assert np.array_equal(order, brio)                          # not the sorted order
-    assert not np.array_equal(order, line_order(*_columns(pts)))
+    assert not np.array_equal(order, line_order(pts))
 
 
 @pytest.mark.parametrize("n", [1000, 3 * SMALL])
 def test_two_row_grid_ties_do_not_depend_on_input_order(n):
     x = np.linspace(0.0, 1.0, n // 2)
     pts = np.vstack([np.column_stack([x, np.zeros_like(x)]), np.column_stack([x, np.full_like(x, 1e-7)])])
-    assert len(line_order(*_columns(pts))) == len(pts)            # thin, and every rectangle cocircular
+    assert len(line_order(pts)) == len(pts)            # thin, and every rectangle cocircular
     perm = np.random.default_rng(5).permutation(len(pts))
     a, b = Delaunay(pts), Delaunay(pts[perm])
     assert check_delaunay(pts, a.simplices)[0]
