@@ -209,10 +209,21 @@ def line_order(pts):
         return none
     x = pts[:, 0].copy()
     y = pts[:, 1].copy()
-    u = x if c == 0 else y
-    order = np.argsort(u)
-    _fix_ties(order, u[order], x, y)
-    return order
+    keys = (x if c == 0 else y).view(np.int64).copy()  # the doubles' bits, made monotone:
+    for i in range(n):                                  # negative ones count down
+        if keys[i] < 0:
+            keys[i] ^= 0x7FFFFFFFFFFFFFFF
+    return _sorted(keys, x, y)[0]
+
+
+@njit(cache=True)
+def _sorted(keys, x, y):
+    """``(order, keys[order])``: the int64 ``keys`` sorted, equal keys by coordinates.  (One
+    compiled sort shared by both orders: numba's ``argsort`` costs seconds to compile.)"""
+    order = np.argsort(keys)
+    skeys = keys[order]
+    _fix_ties(order, skeys, x, y)
+    return order, skeys
 
 
 @njit(cache=True)
@@ -220,10 +231,7 @@ def small_order(x, y, brio):
     """``insertion_order`` in one compiled call, with the walk hints: ``(order, hints)``.
 
     For small inputs the fixed cost of several calls from Python is larger than the work."""
-    keys = _order_keys(x, y, brio)
-    order = np.argsort(keys)
-    skeys = keys[order]
-    _fix_ties(order, skeys, x, y)
+    order, skeys = _sorted(_order_keys(x, y, brio), x, y)
     return order, walk_hints(skeys)
 
 
