@@ -142,6 +142,10 @@ def _incircle_of_differences(adx, ady, bdx, bdy, cdx, cdy, w):
 # ``_nrt=True`` is set explicitly because numba otherwise inherits the caller's setting.
 @njit(cache=True, _nrt=True)
 def _orient_exact(ax, ay, bx, by, cx, cy, w):
+    # Stage "grid line": three points on one vertical or one horizontal line (a grid's rows
+    # and columns) are collinear, whatever their coordinates.
+    if (ax == bx and bx == cx) or (ay == by and by == cy):
+        return 0
     # Stage "integer": when the differences are exact small integers (integer grids), the
     # plain determinant has no rounding error at all (products < 2**52, sum < 2**53).
     acx, t1 = two_diff(ax, cx)
@@ -192,8 +196,21 @@ def orient2d_nb(ax, ay, bx, by, cx, cy, w):
 
 
 # --------------------------------------------------------------------- incircle
+@njit(cache=True, inline="always")
+def _two_values(a, b, c, d):
+    """Whether a, b, c, d take at most two distinct values."""
+    o = b if b != a else (c if c != a else d)
+    return (b == a or b == o) and (c == a or c == o) and (d == a or d == o)
+
+
 @njit(cache=True, _nrt=True)
 def _incircle_exact(ax, ay, bx, by, cx, cy, dx, dy, w):
+    # Stage "grid cell": four points with at most two x values and two y values are the
+    # corners of an axis-parallel rectangle, which are cocircular, or two of them coincide;
+    # either way the determinant is exactly 0.  (Every tie of a grid, in a few comparisons
+    # whatever the coordinates: a linspace grid's ties otherwise need the fixed-point stage.)
+    if _two_values(ax, bx, cx, dx) and _two_values(ay, by, cy, dy):
+        return 0
     # Stage "integer" (see _orient_exact): |differences| < 2**12 keeps every term of the
     # determinant below 2**50 and the sum below 2**53, so the plain formula is exact.
     adx, t1 = two_diff(ax, dx)

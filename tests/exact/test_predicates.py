@@ -130,3 +130,45 @@ def test_hypothesis_scaled_integer_ties(e, pts):
     a, b, c, d = [(x * s, y * s) for x, y in pts]
     assert orient2d(a, b, c) == f_orient(a, b, c)
     assert incircle(a, b, c, d) == f_incircle(a, b, c, d)
+
+
+@given(st.tuples(finite, finite), st.tuples(finite, finite),
+       st.lists(st.tuples(st.integers(0, 1), st.integers(0, 1)), min_size=4, max_size=4))
+def test_hypothesis_corners_of_an_axis_parallel_rectangle_are_a_tie(xs, ys, corners):
+    """Stage "grid cell": four points among a rectangle's corners (repeats allowed, the
+    rectangle possibly flat) answer 0 without arithmetic; the oracle agrees."""
+    a, b, c, d = [(xs[i], ys[j]) for i, j in corners]
+    assert incircle(a, b, c, d) == f_incircle(a, b, c, d) == 0
+
+
+@given(st.tuples(finite, finite), st.tuples(finite, finite), st.permutations(range(4)),
+       st.integers(0, 7), st.booleans())
+def test_hypothesis_a_rectangle_one_ulp_off(xs, ys, perm, which, up):
+    """One coordinate of a rectangle's corner moved by one ulp: three x (or y) values, so
+    the shortcut must not answer; the exact stages must agree with the oracle."""
+    pts = [[xs[i], ys[j]] for i, j in ((0, 0), (1, 0), (1, 1), (0, 1))]
+    k, axis = divmod(which, 2)
+    pts[k][axis] = float(np.nextafter(pts[k][axis], math.inf if up else -math.inf))
+    if not math.isfinite(pts[k][axis]):
+        return
+    a, b, c, d = [tuple(pts[i]) for i in perm]
+    assert incircle(a, b, c, d) == f_incircle(a, b, c, d)
+
+
+@given(finite, st.lists(finite, min_size=3, max_size=3), st.booleans())
+def test_hypothesis_points_on_an_axis_parallel_line_are_collinear(c, ts, vertical):
+    """Stage "grid line" of orient2d: three points sharing x (or y) answer 0."""
+    a, b, d = [(c, t) if vertical else (t, c) for t in ts]
+    assert orient2d(a, b, d) == f_orient(a, b, d) == 0
+
+
+def test_linspace_grid_cells_and_their_neighbours_against_fractions():
+    """Every quadruple of a 4 x 4 linspace grid (rectangles, and the non-rectangles that the
+    shortcut must leave to the exact stages) and every triple for orient2d."""
+    g = np.linspace(0.0, 0.3, 4)
+    pts = [(float(x), float(y)) for x in g for y in g]
+    rng = np.random.default_rng(11)
+    for _ in range(3000):
+        a, b, c, d = (pts[i] for i in rng.choice(len(pts), 4))
+        assert incircle(a, b, c, d) == f_incircle(a, b, c, d)
+        assert orient2d(a, b, c) == f_orient(a, b, c)
