@@ -1,6 +1,6 @@
 """Warm-up: compile every numba kernel of the library into numba's on-disk cache, once.
 
-    python -m reference_impl warm          # what `make setup` runs (about a minute, cold)
+    python -m reference_impl warm          # what `make warm` runs (about a minute cold, 2 CPUs)
 
 A numba kernel compiles on its first call in a process whose cache holds no
 machine code for it; later processes load it from the cache.  Without a warm-up
@@ -13,16 +13,19 @@ when the package directory is read-only: the same rule as ``_jitcache``).  It fi
 drops cached code compiled against modules edited since (``_jitcache.purge_stale_cache``).
 
 The features are run in a fixed list (``FEATURES``) and each is timed, so the
-output says where compile time goes.  ``not_cached()`` names the kernels that the
+output says where compile time goes.  On a cold cache they are first compiled in worker
+processes side by side (``PHASES``: the 2D and 3D predicates, then the 2D and 3D kernels,
+then the rest), which divides the wait by about the number of CPUs up to the longest feature.  ``not_cached()`` names the kernels that the
 cache does not hold (tests/test_warmup.py keeps it empty after a warm-up).
 
 >>> seconds = warm(progress=None)          # (already cached here: fast)
 >>> sorted(seconds)[:3]
-['2d delaunay', '2d updates', '3d delaunay']
+['2d delaunay', '2d predicates', '2d updates']
 """
 from __future__ import annotations
 
 import importlib
+import os
 import sys
 import time
 from pathlib import Path
@@ -30,7 +33,7 @@ from typing import Callable
 
 import numpy as np
 
-__all__ = ["FEATURES", "warm", "not_cached", "kernels"]
+__all__ = ["FEATURES", "PHASES", "default_jobs", "warm", "not_cached", "kernels"]
 
 
 def _delaunay() -> None:
@@ -56,18 +59,22 @@ def _updates() -> None:
 
 def _exact() -> None:
     from reference_impl.exact.predicates import incircle, orient2d
-    from reference_impl.exact.predicates3d import insphere, insphere_batch, orient3d, orient3d_batch
     for s in (1.0, 1e-300, 1e300):
         orient2d((0, 0), (s, s), (2 * s, 2 * s)), incircle((0, 0), (s, 0), (0, s), (s, s))
-        orient3d((0, 0, 0), (s, 0, 0), (0, s, 0), (s, s, 0))
-        insphere((0, 0, 0), (s, 0, 0), (0, s, 0), (0, 0, s), (s, s, s))
     orient2d((0.5, 0.5000000000000001), (12, 12), (24, 24))
-    orient3d_batch([[0, 0, 0]], [[1, 0, 0]], [[0, 1, 0]], [[0, 0, 1]])
-    insphere_batch([[0, 0, 0]], [[1, 0, 0]], [[0, 1, 0]], [[0, 0, -1]], [[5, 5, 5]])
     incircle((1e-300, 0), (1, 0), (0, 1), (1e300, 1))
     from reference_impl.exact.fixed import SCRATCH, incircle_fixed, orient_fixed   # (float ties)
     iw = np.zeros(SCRATCH, dtype=np.int64)
     orient_fixed(0.1, 0.2, 0.2, 0.4, 0.3, 0.6, iw), incircle_fixed(0.1, 0.1, 0.3, 0.1, 0.3, 0.3, 0.1, 0.3, iw)
+
+
+def _exact3d() -> None:
+    from reference_impl.exact.predicates3d import insphere, insphere_batch, orient3d, orient3d_batch
+    for s in (1.0, 1e-300, 1e300):
+        orient3d((0, 0, 0), (s, 0, 0), (0, s, 0), (s, s, 0))
+        insphere((0, 0, 0), (s, 0, 0), (0, s, 0), (0, 0, s), (s, s, s))
+    orient3d_batch([[0, 0, 0]], [[1, 0, 0]], [[0, 1, 0]], [[0, 0, 1]])
+    insphere_batch([[0, 0, 0]], [[1, 0, 0]], [[0, 1, 0]], [[0, 0, -1]], [[5, 5, 5]])
 
 
 def _voronoi() -> None:
@@ -88,20 +95,23 @@ def _proximity() -> None:
         largest_empty_circle(pts), max_clearance(pts, (0.3, 0.2), (4.6, 4.7))
 
 
+def _flips() -> None:
+    from reference_impl.structures.flips import apply_flips, flip_to_delaunay, laplacian_smooth, lawson_flip, mesh_quality, validate_triangulation
+    fan = np.array([(0, 0), (2, 0), (2, 2), (0, 2), (1.0, 0.5)])
+    tris = np.array([(0, 1, 4), (1, 2, 4), (2, 3, 4), (3, 0, 4)])
+    validate_triangulation(fan, tris), lawson_flip(fan, tris)
+    apply_flips(fan, tris, flip_to_delaunay(fan, tris))
+    laplacian_smooth(fan, tris), mesh_quality(fan, tris)
+
+
 def _meshes() -> None:
     from reference_impl.structures.constrained import ConstrainedDelaunay, constrained_delaunay
-    from reference_impl.structures.flips import apply_flips, flip_to_delaunay, laplacian_smooth, lawson_flip, mesh_quality, validate_triangulation
     from reference_impl.structures.navmesh import NavMesh
     from reference_impl.structures.polygon import polygon_triangulation
     square = [(0, 0), (4, 0), (4, 4), (0, 4), (1, 1), (3, 3), (1, 3), (3, 1)]
     cd = ConstrainedDelaunay(square, [(4, 5)])
     cd.simplices, cd.neighbors, cd.constrained, cd.edges(), cd.constraint_edges()
     constrained_delaunay(square, [(4, 5), (0, 1)])
-    fan = np.array([(0, 0), (2, 0), (2, 2), (0, 2), (1.0, 0.5)])
-    tris = np.array([(0, 1, 4), (1, 2, 4), (2, 3, 4), (3, 0, 4)])
-    validate_triangulation(fan, tris), lawson_flip(fan, tris)
-    apply_flips(fan, tris, flip_to_delaunay(fan, tris))
-    laplacian_smooth(fan, tris), mesh_quality(fan, tris)
     polygon_triangulation([(0, 0), (6, 0), (6, 6), (0, 6)], [[(2, 2), (4, 2), (4, 4), (2, 4)]])
     nav = NavMesh([(0, 0), (4, 0), (4, 4), (2, 1), (0, 4)])
     nav.shortest_path((0.5, 3), (3.5, 3)), nav.locate((2, 3)), nav.is_visible((0.5, 3), (3.5, 3))
@@ -133,21 +143,72 @@ def _checkers() -> None:
 
 
 FEATURES: dict[str, Callable[[], None]] = {
-    "exact predicates": _exact, "2d delaunay": _delaunay, "2d updates": _updates,
+    "2d predicates": _exact, "3d predicates": _exact3d, "2d delaunay": _delaunay, "2d updates": _updates,
     "voronoi and hull": _voronoi, "proximity": _proximity, "meshes and paths": _meshes,
-    "dynamic network": _dynamic, "3d delaunay": _space, "checkers": _checkers,
+    "flips and quality": _flips, "dynamic network": _dynamic, "3d delaunay": _space,
+    "checkers": _checkers,
 }
 
+# A cold compile runs the features in processes side by side, phase after phase: every
+# feature calls the exact predicates, and most call the 2D kernel, so those are compiled
+# (and saved to the cache) before the features that would otherwise each compile them again.
+PHASES: tuple[tuple[str, ...], ...] = (
+    ("2d predicates", "3d predicates"),
+    ("2d delaunay", "3d delaunay"),
+    ("meshes and paths", "2d updates", "proximity", "flips and quality", "voronoi and hull",
+     "dynamic network", "checkers"),                                  # (longest first)
+)
 
-def warm(progress: Callable[[str], None] | None = print) -> dict[str, float]:
+
+def _run(name: str) -> float:
+    """Run feature ``name`` (in a worker process of ``_compile_side_by_side``); its seconds."""
+    t = time.perf_counter()
+    FEATURES[name]()
+    return time.perf_counter() - t
+
+
+def _compile_side_by_side(jobs: int, progress: Callable[[str], None] | None) -> bool:
+    """Compile every feature into the cache in ``jobs`` worker processes, ``PHASES`` in turn.
+    False when worker processes cannot be started here (then the caller compiles alone)."""
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor
+    from concurrent.futures.process import BrokenProcessPool
+    try:
+        with ProcessPoolExecutor(max_workers=jobs, mp_context=multiprocessing.get_context("spawn")) as pool:
+            for phase in PHASES:
+                t = time.perf_counter()
+                done = dict(zip(phase, pool.map(_run, phase)))
+                if progress:
+                    each = ", ".join(f"{name} {s:.1f} s" for name, s in done.items())
+                    progress(f"  compiled side by side in {time.perf_counter() - t:5.1f} s: {each}")
+    except (OSError, BrokenProcessPool) as exc:
+        if progress:
+            progress(f"  (no worker processes: {exc}; compiling in this process)")
+        return False
+    return True
+
+
+def default_jobs() -> int:
+    """Worker processes for a cold compile: the CPUs this process may use, at most 4."""
+    cpus = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
+    return max(1, min(4, cpus))
+
+
+def warm(progress: Callable[[str], None] | None = print, jobs: int | None = None) -> dict[str, float]:
     """Run every feature once on a tiny input; return seconds per feature (compile or load).
 
-    ``progress`` receives one line per feature as it finishes (``None``: silent).
+    ``progress`` receives one line per feature as it finishes (``None``: silent).  When most
+    kernels are missing from the cache (a cold start), they are first compiled in ``jobs``
+    worker processes (``default_jobs()``; 1: none), ``PHASES`` in turn; the features then run
+    here as always, which loads them (and compiles anything a worker did not leave behind).
     """
     from reference_impl._jitcache import purge_stale_cache
     dropped = purge_stale_cache()          # machine code compiled against since-edited modules
     if progress and dropped:
         progress(f"  (dropped the stale cache of {', '.join(dropped)})")
+    jobs = default_jobs() if jobs is None else jobs
+    if jobs > 1 and 4 * len(not_cached()) > len(kernels()):
+        _compile_side_by_side(jobs, progress)
     seconds = {}
     for name, run in FEATURES.items():
         t = time.perf_counter()

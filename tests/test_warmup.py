@@ -19,6 +19,8 @@ import sys
 import textwrap
 from pathlib import Path
 
+from reference_impl import warmup
+
 ROOT = Path(__file__).resolve().parents[1]
 
 PROBE = textwrap.dedent("""
@@ -44,9 +46,10 @@ def test_after_warming_nothing_compiles_and_every_kernel_is_cached():
     assert second["kernels"] > 100, second   # the package's kernels were found
     assert second["misses"] == {}, f"compiled again in a warmed process: {second['misses']}"
     assert second["unindexed"] == [], f"kernels the warm-up never reached: {second['unindexed']}"
-    assert set(second["seconds"]) == {"exact predicates", "2d delaunay", "2d updates", "voronoi and hull",
-                                      "proximity", "meshes and paths", "dynamic network", "3d delaunay",
-                                      "checkers"}
+    assert set(second["seconds"]) == {"2d predicates", "3d predicates", "2d delaunay", "2d updates",
+                                      "voronoi and hull", "proximity", "meshes and paths",
+                                      "flips and quality", "dynamic network", "3d delaunay", "checkers"}
+    assert {name for phase in warmup.PHASES for name in phase} == set(warmup.FEATURES)
 
 
 def test_an_empty_cache_is_reported(tmp_path):
@@ -68,3 +71,13 @@ def test_warm_command_reports_every_feature():
     assert lines[0].startswith("warming numba's cache")
     assert any(line.split()[:2] == ["2d", "delaunay"] for line in lines), run.stdout
     assert lines[-1].startswith("done in ") and "not reached" not in lines[-1], run.stdout
+
+
+def test_side_by_side_compile_runs_every_phase_in_worker_processes():
+    """The cold-start path (``warm`` uses it when most kernels are missing) on a warm cache:
+    each phase's features run in spawned workers and report their seconds."""
+    lines = []
+    assert warmup._compile_side_by_side(2, lines.append)
+    assert len(lines) == len(warmup.PHASES), lines
+    for phase, line in zip(warmup.PHASES, lines):
+        assert all(f"{name} " in line for name in phase), line
