@@ -181,10 +181,10 @@ class Delaunay:
         if built[0] == BUDGET:                        # sorted order was too slow here: BRIO
             order, hints = insertion_order(pts, with_hints=True)
             built = kernel.triangulate(pts, order, hints, False, small, 0)
-        (code, order, self._P, self._M, self._start_of, self._state, self._dup, simp, rep) = built
+        (code, order, self._P, self._M, self._state, self._dup, simp, rep) = built
         self._flat = code == FLAT
         self._cap_v, self._cap_t = len(self._P), len(self._M) // kernel.RECORD
-        self._start_of = None      # the build's vertex -> triangle map: see _vertex_map
+        self._start_of = None      # the build's vertex -> triangle map stays behind: see _vertex_map
         self._scratch = self._work = None
         n = len(order)
         # internal vertex u = input point order[u]

@@ -403,8 +403,8 @@ def triangulate(pts, order, hints, compute_order, extract_now, budget):
     by ``line_budget`` when that is 0; then ``small_order`` if the cap is reached), else
     ``ordering.small_order``.  Allocates the mesh for
     ``pts[order]`` and builds it; with ``extract_now`` also the output triangles.
-    Returns ``(code, order, P, M, start_of, state, dup, simplices, rep)`` (the cavity
-    scratch stays here: every array returned costs its boxing, about 0.5 us); ``code`` is
+    Returns ``(code, order, P, M, state, dup, simplices, rep)`` (the cavity scratch and the
+    vertex -> triangle map stay here: every array returned costs its boxing, about 0.5 us); ``code`` is
     ``OK``, ``FLAT`` when nothing was built (fewer than three points, or all collinear), or
     ``BUDGET`` (the caller builds again in the BRIO order); ``simplices``/``rep`` are empty
     unless extracted."""
@@ -429,7 +429,7 @@ def triangulate(pts, order, hints, compute_order, extract_now, budget):
     if extract_now and code == OK:
         rep = smallest_labels(order, dup[:n])     # (= order when there are no duplicates)
         simp = extract(M, state[S_NTRI], rep)
-    return code, order, P, M, start_of, state, dup, simp, rep
+    return code, order, P, M, state, dup, simp, rep
 
 
 @njit(cache=True)

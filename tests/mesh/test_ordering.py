@@ -53,7 +53,7 @@ def test_hints_shorten_the_walk_on_a_nearly_straight_line():
     steps = {}
     for name, h in (("hints", hints), ("none", np.full_like(hints, -1))):
         out = kernel.triangulate(pts, order, h, False, True, 0)
-        state, simplices = out[5], out[7]
+        state, simplices = out[4], out[6]
         steps[name] = state[kernel.S_STEPS] / len(pts)
         assert check_delaunay(pts, simplices)[0]
     assert steps["hints"] < 0.7 * steps["none"], steps     # measured: 3.1 vs 6.5 steps per point
@@ -98,7 +98,7 @@ def test_sorted_build_that_runs_past_its_cap_starts_again_in_brio_order(n):
     assert len(order) == n                                     # thin: sorted order is tried
     empty = np.empty(0, dtype=np.int64)
     assert kernel.triangulate(pts, order, empty, False, False, kernel.line_budget(n))[0] == BUDGET
-    uncapped = kernel.triangulate(pts, order, empty, False, False, 0)[5]
+    uncapped = kernel.triangulate(pts, order, empty, False, False, 0)[4]
     assert uncapped[kernel.S_TESTS] > 100 * n                   # quadratic without the cap
     d = Delaunay(pts)
     assert check_delaunay(pts, d.simplices)[0]
