@@ -15,8 +15,9 @@ drops cached code compiled against modules edited since (``_jitcache.purge_stale
 The features are run in a fixed list (``FEATURES``) and each is timed, so the
 output says where compile time goes.  On a cold cache they are first compiled in worker
 processes side by side (``PHASES``: the 2D and 3D predicates, then the 2D and 3D kernels,
-then the rest), which divides the wait by about the number of CPUs up to the longest feature.  ``not_cached()`` names the kernels that the
-cache does not hold (tests/test_warmup.py keeps it empty after a warm-up).
+then the rest), which divides the wait by about the number of CPUs, down to the longest
+feature.  ``not_cached()`` names the kernels that the cache does not hold
+(tests/test_warmup.py keeps it empty after a warm-up).
 
 >>> seconds = warm(progress=None)          # (already cached here: fast)
 >>> sorted(seconds)[:3]

@@ -401,13 +401,13 @@ def triangulate(pts, order, hints, compute_order, extract_now, budget):
     with work ``budget`` (0: none; see ``build``).  With ``compute_order`` both are computed
     here instead: ``ordering.line_order`` for a thin strip (its work capped by ``budget``, or
     by ``line_budget`` when that is 0; then ``small_order`` if the cap is reached), else
-    ``ordering.small_order``.  Allocates the mesh for
-    ``pts[order]`` and builds it; with ``extract_now`` also the output triangles.
-    Returns ``(code, order, P, M, state, dup, simplices, rep)`` (the cavity scratch and the
-    vertex -> triangle map stay here: every array returned costs its boxing, about 0.5 us); ``code`` is
-    ``OK``, ``FLAT`` when nothing was built (fewer than three points, or all collinear), or
-    ``BUDGET`` (the caller builds again in the BRIO order); ``simplices``/``rep`` are empty
-    unless extracted."""
+    ``ordering.small_order``.  Allocates the mesh for ``pts[order]`` and builds it; with
+    ``extract_now`` also the output triangles.  Returns ``(code, order, P, M, state, dup,
+    simplices, rep)`` (the cavity scratch and the vertex -> triangle map stay here: every
+    array returned costs its boxing, about 0.5 us); ``code`` is ``OK``, ``FLAT`` when nothing
+    was built (fewer than three points, or all collinear), or ``BUDGET`` (only with an order
+    given: the caller builds again in the BRIO order); ``simplices``/``rep`` are empty unless
+    extracted."""
     if compute_order:
         order = line_order(pts)
         hints = np.empty(0, np.int64)

@@ -189,15 +189,8 @@ def _legalize(tri, nbr, cid, vt, X, Y, w, stack, mark, top):
 def _edge_at(tri, nbr, vt, h, u, v):
     """``find_edge(u, v)``, trying triangle h first (the one that held the edge when it was
     queued: usually it still does, and the fan walk around u is skipped)."""
-    a = tri[h, 0]
-    b = tri[h, 1]
-    c = tri[h, 2]
-    if (a == u or b == u or c == u) and (a == v or b == v or c == v):
-        if a != u and a != v:
-            return h, 0
-        if b != u and b != v:
-            return h, 1
-        return h, 2
+    if slot(tri, h, u) >= 0 and slot(tri, h, v) >= 0:
+        return h, third(tri, h, u, v)
     return find_edge(tri, nbr, vt, u, v)
 
 
