@@ -3,7 +3,8 @@
     python -m grader list
     python -m grader judge PROBLEM FILE [--json] [--report out.html]
     python -m grader grade PROBLEM SUBMISSIONS_DIR [--db results.sqlite] [--jobs N] [--csv grades.csv]
-                           [--reports DIR] [--scheduler tcp://host:8786]
+                           [--reports DIR] [--scheduler tcp://host:8786] [--similarity]
+    python -m grader similarity PROBLEM SUBMISSIONS_DIR [--reports DIR] [--reference DIR]... [--threshold 0.5]
     python -m grader timed start PROBLEM STUDENT [--db timed.sqlite]
     python -m grader timed status PROBLEM STUDENT [--db timed.sqlite]
     python -m grader timed submit PROBLEM STUDENT FILE [--db timed.sqlite] [--json]
@@ -80,12 +81,43 @@ def _cmd_grade(a: argparse.Namespace) -> int:
     else:
         summaries = grade_class(a.problem, a.submissions, a.db, jobs=a.jobs, scheduler=a.scheduler, csv_path=a.csv,
                             report_dir=a.reports, progress=not a.quiet)
+    if a.similarity:
+        _similarity(a.problem, a.submissions, a.reports or SIMILARITY_DIR, a.reference, a.boilerplate, a.threshold,
+                    sys.stderr)
     if a.json:
         print(json.dumps(summaries, indent=1))
     else:
         for s in sorted(summaries, key=lambda s: s["student"]):
             print(f"{s['student']:20} {s.get('verdict', ''):4} {s.get('score', '')}/{s.get('max_score', '')} {s.get('skipped', '')}")
     return 0
+
+
+SIMILARITY_DIR = "similarity-report"
+
+
+def _similarity(problem, submissions, report_dir, references, boilerplate, threshold, out) -> None:
+    from .similarity import run, summary_lines
+
+    analysis = run(problem, submissions, report_dir, references or [], boilerplate or [], threshold)
+    for line in summary_lines(analysis):
+        print(line, file=out)
+    print(f"report: {Path(report_dir) / 'similarity.html'}", file=out)
+
+
+def _cmd_similarity(a: argparse.Namespace) -> int:
+    _similarity(a.problem, a.submissions, a.reports or SIMILARITY_DIR, a.reference, a.boilerplate, a.threshold,
+                sys.stdout)
+    return 0
+
+
+def _similarity_options(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--reference", action="append", metavar="DIR",
+                   help="also compare every student with the .py/.ipynb files under DIR (repeatable; "
+                        "the tutorial's code is always a reference)")
+    p.add_argument("--boilerplate", action="append", metavar="DIR",
+                   help="code under DIR is given to everyone: it counts for nobody (repeatable; the starter "
+                        "notebook and the statement's snippets always do)")
+    p.add_argument("--threshold", type=float, default=0.5, help="flag pairs scoring at least this (default 0.5)")
 
 
 def _cmd_timed(a: argparse.Namespace) -> int:
@@ -175,7 +207,20 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--quiet", action="store_true", help="no progress bar")
     p.add_argument("--nbgrader", action="store_true",
                    help="SUBMISSIONS is an nbgrader course's submitted/ dir: judge in parallel, then nbgrader autograde")
+    p.add_argument("--similarity", action="store_true",
+                   help=f"then write the class's similarity report (into --reports, else {SIMILARITY_DIR}/)")
+    _similarity_options(p)
     p.set_defaults(func=_cmd_grade)
+    p = sub.add_parser("similarity", help="similarity report of a class: who shares code with whom and the tutorial",
+                       description="Compare every pair of SUBMISSIONS/<student>/<file> (or nbgrader's collected "
+                                   "submitted/<student>/PROBLEM/PROBLEM.ipynb: the solution cells) and every "
+                                   "student with the tutorial's code; write DIR/similarity.html (ranked class, "
+                                   "flagged pairs side by side) and DIR/similarity.csv. Exit 0; 2 on bad input.")
+    p.add_argument("problem")
+    p.add_argument("submissions")
+    p.add_argument("--reports", metavar="DIR", help=f"where the report goes (default {SIMILARITY_DIR}/)")
+    _similarity_options(p)
+    p.set_defaults(func=_cmd_similarity)
     p = sub.add_parser("timed", help="timed attempts: start / status / submit")
     p.add_argument("action", choices=["start", "status", "submit"])
     p.add_argument("problem")
