@@ -34,7 +34,7 @@ Example:
 
 from __future__ import annotations
 
-import io
+import hashlib
 import itertools
 import json
 import re
@@ -221,10 +221,46 @@ def boilerplate(problem: str, extra: list[str | Path] = ()) -> list[str]:
     return out
 
 
-def _fingerprint(name: str, code: str, win: int, boiler: np.ndarray | None = None):
-    from copydetect import CodeFingerprint
+@dataclass
+class Fingerprint:
+    """What copydetect's ``compare_files`` reads of a ``CodeFingerprint``, built here with a
+    deterministic k-gram hash (copydetect hashes with Python's ``hash()``, which changes from run
+    to run, and so would the winnowed fingerprints and the scores)."""
 
-    return CodeFingerprint(name, NOISE_T, win, boilerplate=boiler, language="python", fp=io.StringIO(code))
+    filename: str
+    k: int
+    filtered_code: str
+    offsets: np.ndarray
+    hashes: set
+    hash_idx: dict
+    token_coverage: float
+
+
+def _kgram_hashes(text: str, k: int) -> np.ndarray:
+    data = text.encode("utf-8", errors="surrogatepass")
+    if len(text) == len(data):  # ASCII (the filtered code almost always is): slice bytes
+        grams = (data[i:i + k] for i in range(len(data) - k + 1))
+    else:
+        grams = (text[i:i + k].encode("utf-8", errors="surrogatepass") for i in range(len(text) - k + 1))
+    return np.array([int.from_bytes(hashlib.blake2b(g, digest_size=8).digest(), "little", signed=True)
+                     for g in grams], dtype=np.int64)
+
+
+def _fingerprint(name: str, code: str, win: int, boiler: np.ndarray | None = None) -> Fingerprint:
+    """Tokenise and filter ``code`` (copydetect's ``filter_code``: names -> V/F, strings -> S, no
+    comments or whitespace), hash its k-grams, winnow, drop boilerplate hashes."""
+    from copydetect.utils import filter_code, get_token_coverage, winnow
+
+    filtered, offsets = filter_code(code, name, "python")
+    hashes, idx = winnow(_kgram_hashes(filtered, NOISE_T), win, remove_duplicates=False)
+    if boiler is not None and len(boiler) and len(hashes):
+        keep = ~np.isin(hashes, boiler)
+        hashes, idx = hashes[keep], idx[keep]
+    hash_idx: dict = {}
+    for h, i in zip(hashes.tolist(), idx.tolist()):
+        hash_idx.setdefault(h, []).append(i)
+    return Fingerprint(name, NOISE_T, filtered, offsets, set(hash_idx), hash_idx,
+                       get_token_coverage(hash_idx, NOISE_T, len(filtered)))
 
 
 def boilerplate_hashes(codes: list[str]) -> np.ndarray:
@@ -268,7 +304,13 @@ class Analysis:
 
     def best(self, student: Document) -> Pair | None:
         """The student's highest-scoring pair (with a classmate or a reference)."""
-        return next((p for p in self.pairs if student is p.a or student is p.b), None)
+        if "_best" not in self.__dict__:
+            best: dict[int, Pair] = {}
+            for p in self.pairs:  # best score first
+                best.setdefault(id(p.a), p)
+                best.setdefault(id(p.b), p)
+            self.__dict__["_best"] = best
+        return self.__dict__["_best"].get(id(student))
 
 
 def analyse(problem: str, root: str | Path, references: list[str | Path] = (), extra_boilerplate: list[str | Path] = (),

@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import csv
 import html
+import re
 from pathlib import Path
 from urllib.parse import quote
 
@@ -34,6 +35,7 @@ is shared; independent solutions of the same problem score about 0.1-0.3 here (t
 and the input-reading code); a score at or above the threshold is flagged. A high score is a reason to
 look at the two files, not a verdict: the highlighted regions are the evidence."""
 
+_CONTROL = re.compile(r"[\x00-\x08\x0b-\x1f\x7f]")
 _CSS = """body{font-family:sans-serif;margin:2em} td,th{border:1px solid #ccc;padding:3px 6px;vertical-align:top}
 table{border-collapse:collapse} .flag{color:#b00;font-weight:bold} .side{display:flex;gap:1em}
 .side>div{flex:1;min-width:0} pre{background:#f7f7f7;padding:.5em;overflow-x:auto;font-size:12px}
@@ -42,6 +44,8 @@ mark{background:#ffd27f} p.meaning{max-width:60em}"""
 
 def _text(piece: str) -> str:
     """Code for display: control and format characters shown as escapes, tabs and newlines kept."""
+    if piece.isascii() and not _CONTROL.search(piece):
+        return piece  # the common case, without a pass per character
     return "\n".join("\t".join(clean(part, limit=len(part) * 10 + 1) for part in line.split("\t"))
                      for line in piece.split("\n"))
 
