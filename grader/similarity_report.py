@@ -29,7 +29,8 @@ from .text import clean, csv_cell
 
 MEANING = """The score is the share of a submission's code (after dropping comments, whitespace and the
 starter code and statement snippets everyone is given, with every name replaced by a placeholder) whose
-fingerprints (runs of 25 tokens, found by copydetect's winnowing) also occur in the other file; a pair's
+fingerprints (runs of 25 characters of that filtered code, a name counting as one, chosen by
+copydetect's winnowing) also occur in the other file; a pair's
 score is the larger of its two shares, and against a reference it is the student's share. 1.0: all of it
 is shared; independent solutions of the same problem score about 0.1-0.3 here (they share short idioms
 and the input-reading code); a score at or above the threshold is flagged. A high score is a reason to
@@ -50,11 +51,19 @@ def _text(piece: str) -> str:
                      for line in piece.split("\n"))
 
 
+def _word(ch: str) -> bool:
+    return ch.isalnum() or ch == "_"
+
+
 def show_code(code: str, slices: np.ndarray) -> str:
     """``code`` as escaped HTML with the character ranges ``slices`` (2 x n: starts, ends) in ``<mark>``."""
     out, pos = [], 0
     for start, end in sorted(zip(slices[0].tolist(), slices[1].tolist())) if slices.size else []:
         start, end = max(int(start), pos), min(int(end), len(code))
+        while pos < start < len(code) and _word(code[start - 1]) and _word(code[start]):
+            start -= 1  # copydetect's offsets can fall inside a name: mark whole names
+        while 0 < end < len(code) and _word(code[end - 1]) and _word(code[end]):
+            end += 1
         if end <= start:
             continue
         out += [html.escape(_text(code[pos:start])), "<mark>", html.escape(_text(code[start:end])), "</mark>"]
