@@ -212,3 +212,17 @@ def test_short_empty_and_odd_code_compares(tmp_path):
         d = sim.fingerprint(sim.Document("a", "student", "a.py", code))
         p = sim.compare(d, d)
         assert 0 <= p.score <= 1 and not (p.flagged and p.tokens < sim.MIN_TOKENS)
+
+
+def test_nothing_from_the_hidden_tests_is_read(tmp_path, monkeypatch):
+    from grader.problems import Problem
+    from grader.similarity_report import write_reports
+
+    def refuse(*args, **kwargs):
+        raise AssertionError("the similarity report read the problem's tests")
+
+    for name in ("tests", "read_answer", "digest"):
+        monkeypatch.setattr(Problem, name, refuse)
+    a = sim.analyse("delaunay", make_class(tmp_path / "class"))
+    write_reports(a, tmp_path / "out")
+    assert len(a.flagged) == 2
