@@ -21,15 +21,14 @@ import signal
 import sys
 import time
 from dataclasses import dataclass
-from pathlib import Path
 from typing import Any, Sequence
 
-from .engines import ENGINE_API, IMPORTED_BY_LIBRARIES, engine_libraries, engine_modules
-from .sandbox import Sandbox, python_roots
+from .jail import BOOTSTRAP_PATH, Sandbox, python_roots
+from .jail.engines import ENGINE_API, IMPORTED_BY_LIBRARIES, engine_libraries, engine_modules
 from .text import clean
 
 #: The child's program, passed with ``-c`` (the grader's directory is not visible in the jail).
-BOOTSTRAP_SOURCE = Path(__file__).with_name("child_bootstrap.py").read_text()
+BOOTSTRAP_SOURCE = BOOTSTRAP_PATH.read_text()
 CLK_TCK = os.sysconf("SC_CLK_TCK")
 
 
@@ -354,7 +353,7 @@ def _child_config(box: Sandbox, mode: str, entry: str, forbidden: Sequence[str],
     return {"mode": mode, "entry": entry, "forbidden": list(forbidden), "filename": filename,
             "read_roots": read_roots, "write_roots": [work], "engines": engine_modules(forbidden),
             "engine_api": ENGINE_API, "engine_libs": engine_libraries(forbidden),
-            "library_imports": list(IMPORTED_BY_LIBRARIES)}
+            "library_imports": list(IMPORTED_BY_LIBRARIES), "nproc": box.inner_nproc()}
 
 
 def _classify_death(child: _Child, memory_mb: float, limit_mb: int) -> RunOutcome:
@@ -363,6 +362,9 @@ def _classify_death(child: _Child, memory_mb: float, limit_mb: int) -> RunOutcom
         sig = -code
         if sig == signal.SIGXCPU:
             return RunOutcome("timeout", message="CPU time limit exceeded")
+        if sig == signal.SIGSYS:  # the seccomp filter of a non-root jail: a new process
+            return RunOutcome("violation", message="a forbidden system call (this jail lets a submission start no "
+                                                   "other process: fork, vfork, clone, posix_spawn)", memory_mb=memory_mb)
         if sig == signal.SIGKILL and memory_mb >= 0.9 * limit_mb:
             return RunOutcome("memory", message="killed near the memory limit", memory_mb=memory_mb)
         return RunOutcome("crash", message=_describe_signal(sig), memory_mb=memory_mb)

@@ -16,7 +16,7 @@ import pytest
 
 from grader import cgroups, engines, seccomp
 from grader.runner import FunctionWorker
-from grader.sandbox import JAIL_ENV, Limits, Sandbox, bwrap_path, is_root, jail_kind
+from grader.sandbox import JAIL_ENV, TRUSTED_ENV, Limits, Sandbox, bwrap_path, is_root, jail_kind
 from grader.verdicts import Verdict
 
 from .conftest import HERE
@@ -92,14 +92,16 @@ def test_a_notebook_that_plots_with_pyplot_is_accepted(tiny_judge, tmp_path):
     assert r.verdict == "AC", [(t.verdict.value, t.message[:300]) for t in r.tests]
 
 
-def test_pyplot_works_without_root_too(monkeypatch, tiny_judge):
-    """The not-root path (a student checking their own code): no jail, but the same pre-built
-    font cache, so matplotlib does not run fc-list (a forbidden subprocess)."""
+def test_pyplot_works_in_the_trusted_mode_too(monkeypatch, tiny_judge):
+    """The trusted mode (a student checking their own code where no jail can be built): no jail,
+    but the same pre-built font cache, so matplotlib does not run fc-list (a forbidden subprocess)."""
     import grader.sandbox as sandbox
     monkeypatch.setattr(sandbox, "is_root", lambda: False)
+    monkeypatch.setenv(JAIL_ENV, "none")
+    monkeypatch.setenv(TRUSTED_ENV, "1")
     r = tiny_judge.judge_path(HOSTILE / "pyplot_plots.py")
     assert r.verdict == "AC", [(t.verdict.value, t.message[:300]) for t in r.tests]
-    assert r.to_json()["sandbox"] == "rlimits"
+    assert r.to_json()["sandbox"] == "trusted"
 
 
 def test_allowed_libraries_import_and_work_where_their_neighbours_are_forbidden(tiny_judge):
