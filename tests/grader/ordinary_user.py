@@ -33,7 +33,7 @@ from pathlib import Path
 from typing import Sequence
 
 from grader.jail.mounts import CLONE_NEWNS, MS_BIND, MS_PRIVATE, MS_RDONLY, MS_REC, MS_REMOUNT, mount, unshare
-from grader.jail.paths import outermost, python_roots, under
+from grader.jail.paths import outermost, python_roots
 
 REPO = Path(__file__).resolve().parents[2]
 USER = "grader-instructor"

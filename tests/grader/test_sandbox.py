@@ -206,3 +206,32 @@ def test_engines_are_covered_in_every_copy_and_under_every_name(tmp_path, monkey
     assert not any("tri" in p.split("/")[-1] and "matplotlib" in p for p in covered if p.endswith("tri"))
     assert str(venv / "scipy/spatial") not in covered
     assert engines.modules_of([str(files[0])]) == ["scipy.spatial._qhull"]
+
+
+@root_only
+@pytest.mark.parametrize("kind", [*JAILS, "user"])
+def test_hidden_paths_under_usr_are_hidden_too(kind, monkeypatch, tmp_path):
+    """A course kept under /usr/local (its class folder, results, reports) is hidden like one
+    anywhere else (issue 23, item 4: the bubblewrap jail bound all of /usr); "user" is the
+    ordinary user's bubblewrap jail (run here as root with is_root patched)."""
+    import grader.sandbox as sandbox
+    if kind == "user":
+        monkeypatch.setattr(sandbox, "is_root", lambda: False)
+        if sandbox.jail_kind() != "bwrap":
+            pytest.skip("bubblewrap cannot create a user namespace here")
+    else:
+        _jail(monkeypatch, kind)
+    course = Path(f"/usr/local/share/grader-hidden-{os.getpid()}")
+    (course / "submitted" / "bob").mkdir(parents=True)
+    secret = course / "submitted" / "bob" / "delaunay.py"
+    secret.write_text("# bob's\n")
+    src = ("import ctypes\nlibc = ctypes.CDLL(None)\nlibc.opendir.restype = ctypes.c_void_p\n"
+           f"def f():\n    return [libc.open({str(secret).encode()!r}, 0) >= 0, bool(libc.opendir({str(course / 'submitted').encode()!r}))]\n")
+    try:
+        with Sandbox(Limits(cpu_s=5, memory_mb=256), hide=[course]) as box:
+            w = FunctionWorker(box, src, "f", forbidden=[])
+            out = w.call([], 5)
+            w.stop()
+    finally:
+        shutil.rmtree(course, ignore_errors=True)
+    assert (out.status, out.value) == ("ok", [False, False]), out
