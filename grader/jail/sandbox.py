@@ -64,7 +64,7 @@ from .paths import outermost, python_roots, under
 from .procs import alive, children, parent, uid_processes
 
 __all__ = ["Limits", "Sandbox", "JailUnavailable", "jail_kind", "mechanism", "is_root", "bwrap_path", "python_roots",
-           "uid_processes", "refusal_message", "refuses_processes", "JAIL_ENV", "TRUSTED_ENV", "LOCK_DIR", "JAIL_WORKDIR", "UID_BASE"]
+           "uid_processes", "refusal_message", "refuses_processes", "require_jail", "JAIL_ENV", "TRUSTED_ENV", "LOCK_DIR", "JAIL_WORKDIR", "UID_BASE"]
 
 #: First uid/gid of the pool of dedicated sandbox users (root mode); one per concurrent sandbox.
 UID_BASE = 62000
@@ -193,6 +193,15 @@ def refusal_message(reason: str) -> str:
             "'python -m grader.sandbox' says what this machine gives.")
 
 
+def require_jail() -> None:
+    """Raise :class:`JailUnavailable` unless this process can build a kernel jail (class grading
+    checks this before it starts, instead of failing once per student)."""
+    if not is_root() and jail_kind() == "none":
+        why = ("user namespaces are disabled here (GRADER_JAIL=none)" if os.environ.get(JAIL_ENV) == "none"
+               else bwrap_status(None)[1])
+        raise JailUnavailable(refusal_message(why))
+
+
 def refuses_processes() -> bool:
     """True when this process's sandboxes refuse new processes (an ordinary user's jail)."""
     return not is_root() and jail_kind() == "bwrap"
@@ -240,8 +249,7 @@ class Sandbox:
         if not self.root_mode:
             self.kind = jail_kind()
             if self.kind == "none" and not self.trusted:
-                raise JailUnavailable(refusal_message("user namespaces are disabled here (GRADER_JAIL=none)"
-                                                      if os.environ.get(JAIL_ENV) == "none" else bwrap_status(None)[1]))
+                require_jail()
         self.private_dir = tempfile.mkdtemp(prefix="grader-private-")
         os.chmod(self.private_dir, 0o700)
         if self.root_mode:

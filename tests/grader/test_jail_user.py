@@ -85,7 +85,7 @@ def test_without_a_jail_the_attacks_succeed(name, tiny_judge, tmp_path, monkeypa
     assert t.verdict == "RE" and "RuntimeError" in t.message, (t.verdict, t.message)
 
 
-def _refuses(tiny_judge, capsys) -> None:
+def _refuses(tiny_judge, capsys, tmp_path) -> None:
     with pytest.raises(JailUnavailable) as exc:
         tiny_judge.judge_path(HOSTILE / "wrong_type.py")
     msg = str(exc.value)
@@ -100,22 +100,29 @@ def _refuses(tiny_judge, capsys) -> None:
     assert "judged in the trusted mode" in out and "AC" in out
     assert grader_main(["judge", "delaunay", str(sub), "--trusted", "--json"]) == 0
     assert json.loads(capsys.readouterr().out)["sandbox"] == "trusted"
+    # a class is refused once, before any student is judged (not JE per student)
+    klass = tmp_path / "class" / "alice"
+    klass.mkdir(parents=True)
+    (klass / "delaunay.py").write_text(sub.read_text())
+    assert grader_main(["grade", "delaunay", str(klass.parent), "--db", str(tmp_path / "r.sqlite"), "--quiet"]) == 2
+    assert "no kernel jail can be built" in capsys.readouterr().err
+    assert not (tmp_path / "r.sqlite").exists() or "alice" not in (tmp_path / "r.sqlite").read_bytes().decode("latin-1")
 
 
 @user_only
-def test_without_user_namespaces_grading_refuses_and_the_trusted_mode_judges(tiny_judge, monkeypatch, capsys):
+def test_without_user_namespaces_grading_refuses_and_the_trusted_mode_judges(tiny_judge, monkeypatch, capsys, tmp_path):
     monkeypatch.setenv(JAIL_ENV, "none")  # as a kernel without unprivileged user namespaces
     assert jail_kind() == "none"
-    _refuses(tiny_judge, capsys)
+    _refuses(tiny_judge, capsys, tmp_path)
 
 
 # -- as root, simulated ----------------------------------------------------------------------------
 
-def test_not_root_without_a_jail_refuses_and_trusted_judges_simulated(tiny_judge, monkeypatch, capsys):
+def test_not_root_without_a_jail_refuses_and_trusted_judges_simulated(tiny_judge, monkeypatch, capsys, tmp_path):
     monkeypatch.setattr(sandbox, "is_root", lambda: False)
     monkeypatch.setenv(JAIL_ENV, "none")
     monkeypatch.delenv(TRUSTED_ENV, raising=False)
-    _refuses(tiny_judge, capsys)
+    _refuses(tiny_judge, capsys, tmp_path)
     assert mechanism() == "trusted"
 
 
