@@ -24,6 +24,7 @@ from dataclasses import dataclass
 from typing import Any, Sequence
 
 from .jail import BOOTSTRAP_PATH, Sandbox, python_roots
+from .jail.cgroups import SAMPLE_S, ProcTree
 from .jail.engines import ENGINE_API, IMPORTED_BY_LIBRARIES, engine_libraries, engine_modules
 from .text import clean
 
@@ -157,6 +158,13 @@ def _memory_limit_hit(box: Sandbox) -> bool:
         return box.group is not None and box.group.memory_limit_hit()
     except (OSError, ValueError):
         return False
+
+
+def _sample_s(box: Sandbox) -> float:
+    """How often a running test's CPU and idle time are sampled: 0.2 s, or
+    :data:`grader.jail.cgroups.SAMPLE_S` where the accounting is by samples of a process tree
+    (an ordinary account: the exiting process's last CPU is only known from them)."""
+    return SAMPLE_S if isinstance(box.group, ProcTree) else 0.2
 
 
 def _describe_signal(sig: int) -> str:
@@ -466,7 +474,7 @@ class FunctionWorker:
         deadline = wall0 + wall_limit
         cpu_exceeded = idle_exceeded = False
         while True:
-            reply = child.wait_reply(min(time.monotonic() + 0.2, deadline), want="id")
+            reply = child.wait_reply(min(time.monotonic() + _sample_s(self.box), deadline), want="id")
             if reply is not None:  # the reply to this call, a violation, or junk (see _Child)
                 break
             if child.exit_status is not None or time.monotonic() >= deadline:
@@ -573,7 +581,7 @@ def run_stdio(box: Sandbox, source: str, input_text: str, time_limit: float, for
     reply = None
     cpu_exceeded = junk = False
     while child.exit_status is None and time.monotonic() < deadline:
-        reply = child.wait_reply(min(time.monotonic() + 0.2, deadline), want="__never__")
+        reply = child.wait_reply(min(time.monotonic() + _sample_s(box), deadline), want="__never__")
         if reply is not None and "violation" in reply:
             break
         if reply is not None and ("garbled" in reply or "output_limit" in reply):

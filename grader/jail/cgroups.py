@@ -268,6 +268,11 @@ class _ProcUid(_ProcSum):
         return [] if self.uid is None else uid_processes(self.uid)
 
 
+#: How often the runner samples a ``proc-tree`` sandbox while a test runs (seconds): what an exiting
+#: process used after its last sample is not seen.
+SAMPLE_S = 0.02
+
+
 class ProcTree(_ProcSum):
     """Not root: the processes the sandbox started (:attr:`roots`) and all below them."""
 
@@ -276,6 +281,20 @@ class ProcTree(_ProcSum):
     def __init__(self, memory_mb: int):
         super().__init__(memory_mb)
         self.roots: list[int] = []
+        self._last: dict[tuple[int, bytes], float] = {}  # (pid, start time) -> its own CPU when last seen
+
+    def cpu_seconds(self) -> float:
+        """Each process's own CPU (not ``cutime``: bubblewrap's reaper collects the student's
+        process, which would count it twice), as last seen: a process that has exited (a stdio
+        run) still counts what it had used at the last sample (samples: :data:`SAMPLE_S`)."""
+        for pid in self._pids():
+            try:
+                with open(f"/proc/{pid}/stat", "rb") as f:
+                    fields = f.read().rsplit(b")", 1)[1].split()
+                self._last[pid, fields[19]] = (int(fields[11]) + int(fields[12])) / CLK_TCK
+            except (OSError, IndexError, ValueError):
+                pass
+        return sum(self._last.values())
 
     def _pids(self) -> list[int]:
         me = os.getpid()  # a root reaped and its pid reused by another process is not ours

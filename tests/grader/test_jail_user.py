@@ -132,3 +132,37 @@ def test_the_doctor_names_both_accounts(capsys):
     out = capsys.readouterr().out
     assert "bubblewrap:" in out and "root" in out and ("ordinary user" in out or "this user" in out)
     assert code == (0 if os.geteuid() == 0 or jail_kind() == "bwrap" else 1)
+
+
+# -- the account's jail, as root too (is_root patched: the same bubblewrap command, uid 0 mapped) --
+
+def _as_account(monkeypatch) -> None:
+    if os.geteuid() == 0:
+        monkeypatch.setattr(sandbox, "is_root", lambda: False)
+    if jail_kind() != "bwrap":
+        pytest.skip("bubblewrap cannot create a user namespace here (the ordinary-account run covers it)")
+
+
+def test_a_stdio_run_is_charged_its_cpu_in_the_account_jail(monkeypatch, tiny_judge, tmp_path):
+    """bubblewrap's reaper, not the grader, collects the student's process, so ``wait4`` does not
+    see its CPU: the process tree's samples do (the time was 0.004 s for 0.39 s of work)."""
+    _as_account(monkeypatch)
+    sub = tmp_path / "burn.py"
+    sub.write_text("import sys\nsys.stdin.read()\nx = 0\nfor i in range(3_000_000):\n    x += i\nprint(0)\n")
+    r = tiny_judge.judge_path(sub)
+    assert r.to_json()["sandbox"] == "bwrap+proc-tree+seccomp-noproc"
+    # a few million interpreted additions cost well over 0.05 CPU-seconds on any machine
+    assert r.tests[0].time_s > 0.05, r.tests[0]
+    sub.write_text("import sys\nsys.stdin.read()\nwhile True:\n    pass\n")
+    assert tiny_judge.judge_path(sub).tests[0].verdict == "TLE"
+
+
+def test_threads_are_capped_inside_the_account_jail(monkeypatch, tiny_judge, tmp_path):
+    """RLIMIT_NPROC set inside the sandbox's user namespace counts its threads only: a few work,
+    thousands do not (RE), whatever else the account runs."""
+    _as_account(monkeypatch)
+    sub = tmp_path / "threads.py"
+    sub.write_text("import threading\n\ndef delaunay(points):\n    ts = [threading.Thread(target=len, args=([],)) "
+                   "for _ in range(4)]\n    [t.start() for t in ts]\n    [t.join() for t in ts]\n    return []\n")
+    assert tiny_judge.judge_path(sub).verdict == "WA"
+    assert tiny_judge.judge_path(HOSTILE / "thread_bomb.py").verdict == "RE"
