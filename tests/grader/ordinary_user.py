@@ -22,6 +22,7 @@ Example:
 """
 from __future__ import annotations
 
+import fcntl
 import os
 import pwd
 import shutil
@@ -74,7 +75,14 @@ def _numba_caches() -> list[Path]:
 
 def run_as_user(argv: Sequence[str], env: dict[str, str] | None = None, timeout: float = 1800,
                 user: str = USER) -> subprocess.CompletedProcess:
-    """Run ``argv`` as ``user`` (see the module docstring) with cwd = the checkout; output captured."""
+    """Run ``argv`` as ``user`` (see the module docstring) with cwd = the checkout; output captured.
+    One run at a time per account (a lock): the account's tests count its processes."""
+    with open(os.path.join(tempfile.gettempdir(), f"{user}.lock"), "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        return _run_as_user(argv, env, timeout, user)
+
+
+def _run_as_user(argv: Sequence[str], env: dict[str, str] | None, timeout: float, user: str) -> subprocess.CompletedProcess:
     pw = ensure_user(user)
     uid, gid = pw.pw_uid, pw.pw_gid
     scratch = Path(tempfile.mkdtemp(prefix="grader-as-user-"))
