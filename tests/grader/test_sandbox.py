@@ -235,3 +235,33 @@ def test_hidden_paths_under_usr_are_hidden_too(kind, monkeypatch, tmp_path):
     finally:
         shutil.rmtree(course, ignore_errors=True)
     assert (out.status, out.value) == ("ok", [False, False]), out
+
+
+def test_seccomp_installs_after_the_open_files_limit_is_reached():
+    """Issue 23, item 9: the child installs the filter after RLIMIT_NOFILE is set; looking libc
+    up then (ctypes.util.find_library opens temporary files) failed with EMFILE, JE on every test
+    of a notebook's judge. libc is resolved when the module is imported, in the parent."""
+    import resource
+    prog = seccomp.program()
+    if prog is None:
+        pytest.skip("seccomp filter only for x86-64")
+    r, w = os.pipe()
+    pid = os.fork()
+    if pid == 0:  # pragma: no cover - child
+        try:
+            resource.setrlimit(resource.RLIMIT_NOFILE, (w + 1, w + 1))  # no descriptor left to open
+            try:
+                open("/dev/null").close()
+                full = False
+            except OSError:
+                full = True
+            seccomp.install(prog)
+            os.write(w, json.dumps(["installed", full]).encode())
+        except BaseException as exc:  # noqa: BLE001
+            os.write(w, json.dumps([repr(exc)]).encode())
+        finally:
+            os._exit(0)
+    os.close(w)
+    data = os.read(r, 1000)
+    os.waitpid(pid, 0)
+    assert json.loads(data) == ["installed", True]
