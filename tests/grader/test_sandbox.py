@@ -265,3 +265,26 @@ def test_seccomp_installs_after_the_open_files_limit_is_reached():
     data = os.read(r, 1000)
     os.waitpid(pid, 0)
     assert json.loads(data) == ["installed", True]
+
+
+@root_only
+@pytest.mark.parametrize("kind", [*JAILS, "account"])
+def test_judge_file_from_a_notebook_kernel(kind, tmp_path):
+    """Issue 23, item 9: judging from a Jupyter kernel (many descriptors already open when the
+    child sets RLIMIT_NOFILE before exec) gives the submission's verdict in every jail, not JE;
+    "account" is the ordinary account's jail (is_root patched inside the kernel)."""
+    import nbformat
+    from nbclient import NotebookClient
+    if kind == "bwrap" and (bwrap_path() is None or jail_kind() != "bwrap"):
+        pytest.skip("bubblewrap is not installed or cannot create a user namespace here")
+    patch = "import grader.sandbox as s; s.is_root = lambda: False\n" if kind == "account" else ""
+    env = "" if kind == "account" else f"os.environ[{JAIL_ENV!r}] = {kind!r}\n"
+    code = (f"import os, json\n{env}{patch}from grader.judge import judge_file\nfrom grader.problems import Problem\n"
+            f"r = judge_file(Problem.load({str(HERE / 'fixtures' / 'tiny-delaunay')!r}), "
+            f"{str(HOSTILE / 'wrong_type.py')!r})\n"
+            "print(json.dumps([r.verdict, sorted({str(t.verdict) for t in r.tests}), r.to_json()['sandbox']]))\n")
+    nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(code)])
+    NotebookClient(nb, timeout=300, resources={"metadata": {"path": str(tmp_path)}}).execute()
+    verdict, verdicts, mech = json.loads(nb.cells[0].outputs[-1]["text"])
+    assert verdict == "PE" and "JE" not in verdicts, (verdicts, nb.cells[0].outputs)
+    assert mech.startswith("bwrap+proc-tree" if kind == "account" else kind), mech
