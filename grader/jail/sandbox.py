@@ -415,7 +415,9 @@ class Sandbox:
         """Start ``argv`` jailed; ``cpu_s`` overrides the RLIMIT_CPU of ``self.limits``."""
         cpu = int(cpu_s if cpu_s is not None else self.limits.cpu_s) + 1
         plan, uid, lim = self._plan, self.uid, self.limits
-        nproc = lim.processes + (BWRAP_PROCESSES if self.kind == "bwrap" else 0) if self.root_mode else -1
+        # an account's jail sets RLIMIT_NPROC inside its user namespace (inner_nproc); trusted: as before
+        nproc = lim.processes + (BWRAP_PROCESSES if self.kind == "bwrap" else 0) if self.root_mode else \
+            (lim.processes if self.kind == "trusted" else -1)
         address_mb = self.address_space_mb()
         argv, fds, seccomp_fd = list(argv), list(pass_fds), -1
         if plan is not None and plan.bwrap:
