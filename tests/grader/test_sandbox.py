@@ -160,32 +160,44 @@ def test_memory_of_forked_helpers_is_charged_without_cgroups_too(monkeypatch, ti
     assert r.verdict == "MLE", [(t.verdict.value, t.memory_mb, t.message[:200]) for t in r.tests]
 
 
-def test_seccomp_filter_denies_namespaces_and_ptrace_but_not_fork_or_threads():
-    prog = seccomp.program()
-    if prog is None:
-        pytest.skip("seccomp filter only for x86-64")
+def _in_child(work) -> object:
+    """``work(write_fd)`` in a forked child (which it may make irreversible: seccomp); what the
+    child wrote on the pipe, as JSON (an exception's repr if ``work`` raised)."""
     r, w = os.pipe()
     pid = os.fork()
     if pid == 0:  # pragma: no cover - child
         try:
-            seccomp.install(prog)
-            libc = ctypes.CDLL(None, use_errno=True)
-            res = [libc.unshare(0x10000000), ctypes.get_errno(), libc.ptrace(0, 0, None, None), ctypes.get_errno()]
-            t = threading.Thread(target=lambda: res.append("thread"))
-            t.start()
-            t.join()
-            q = os.fork()
-            if q == 0:
-                os._exit(7)
-            res.append(os.waitstatus_to_exitcode(os.waitpid(q, 0)[1]))
-            os.write(w, json.dumps(res).encode())
+            os.write(w, json.dumps(work(w)).encode())
+        except BaseException as exc:  # noqa: BLE001
+            os.write(w, json.dumps([repr(exc)]).encode())
         finally:
             os._exit(0)
     os.close(w)
     data = os.read(r, 1000)
+    os.close(r)
     os.waitpid(pid, 0)
+    return json.loads(data)
+
+
+def test_seccomp_filter_denies_namespaces_and_ptrace_but_not_fork_or_threads():
+    prog = seccomp.program()
+    if prog is None:
+        pytest.skip("seccomp filter only for x86-64")
+
+    def work(_w: int) -> list:
+        seccomp.install(prog)
+        libc = ctypes.CDLL(None, use_errno=True)
+        res = [libc.unshare(0x10000000), ctypes.get_errno(), libc.ptrace(0, 0, None, None), ctypes.get_errno()]
+        t = threading.Thread(target=lambda: res.append("thread"))
+        t.start()
+        t.join()
+        q = os.fork()
+        if q == 0:
+            os._exit(7)
+        return res + [os.waitstatus_to_exitcode(os.waitpid(q, 0)[1])]
+
     import errno
-    assert json.loads(data) == [-1, errno.EPERM, -1, errno.EPERM, "thread", 7]
+    assert _in_child(work) == [-1, errno.EPERM, -1, errno.EPERM, "thread", 7]
 
 
 def test_engines_are_covered_in_every_copy_and_under_every_name(tmp_path, monkeypatch):
@@ -245,26 +257,18 @@ def test_seccomp_installs_after_the_open_files_limit_is_reached():
     prog = seccomp.program()
     if prog is None:
         pytest.skip("seccomp filter only for x86-64")
-    r, w = os.pipe()
-    pid = os.fork()
-    if pid == 0:  # pragma: no cover - child
+
+    def work(w: int) -> list:
+        resource.setrlimit(resource.RLIMIT_NOFILE, (w + 1, w + 1))  # no descriptor left to open
         try:
-            resource.setrlimit(resource.RLIMIT_NOFILE, (w + 1, w + 1))  # no descriptor left to open
-            try:
-                open("/dev/null").close()
-                full = False
-            except OSError:
-                full = True
-            seccomp.install(prog)
-            os.write(w, json.dumps(["installed", full]).encode())
-        except BaseException as exc:  # noqa: BLE001
-            os.write(w, json.dumps([repr(exc)]).encode())
-        finally:
-            os._exit(0)
-    os.close(w)
-    data = os.read(r, 1000)
-    os.waitpid(pid, 0)
-    assert json.loads(data) == ["installed", True]
+            open("/dev/null").close()
+            full = False
+        except OSError:
+            full = True
+        seccomp.install(prog)
+        return ["installed", full]
+
+    assert _in_child(work) == ["installed", True]
 
 
 @root_only
