@@ -8,7 +8,7 @@ VENV   ?= .venv
 PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed
 
-.PHONY: setup warm demo test lab bench clean chromium
+.PHONY: setup warm demo test lab bench clean chromium bubblewrap
 
 setup: $(STAMP)
 
@@ -29,7 +29,7 @@ demo: warm
 # Test files run in parallel (pytest-xdist); a module that builds one expensive fixture (the
 # nbgrader class, the JupyterLab server) stays on one worker through its xdist_group mark.
 JOBS ?= 2
-test: warm chromium
+test: warm chromium bubblewrap
 	$(PY) -m pytest -n $(JOBS) --dist loadgroup
 
 # JupyterLab refuses to run as root without --allow-root (course containers and CI run as root).
@@ -37,11 +37,20 @@ test: warm chromium
 LAB_ROOT := $(if $(filter 0,$(shell id -u)),--allow-root,)
 LAB_ARGS ?=
 
+# $(call apt_need,COMMAND,PACKAGE,WHAT HAPPENS WITHOUT IT): install PACKAGE with apt-get when
+# COMMAND is missing and we are root, else say what its absence costs.
+apt_need = command -v $(1) >/dev/null 2>&1 || { command -v apt-get >/dev/null 2>&1 && [ "$$(id -u)" = 0 ] \
+	  && apt-get update -qq && apt-get install -y -qq $(2); } \
+	  || echo "$(2) is not installed: $(3) (apt-get install $(2))"
+
 # The browser test drives Debian's chromium (Playwright never downloads a browser here).
 chromium:
-	@command -v chromium >/dev/null 2>&1 || { command -v apt-get >/dev/null 2>&1 && [ "$$(id -u)" = 0 ] \
-	  && apt-get update -qq && apt-get install -y -qq chromium; } \
-	  || echo "chromium is not installed: tests/browser will be skipped (apt-get install chromium)"
+	@$(call apt_need,chromium,chromium,tests/browser will be skipped)
+
+# The jail (grader/jail/): without bubblewrap root grades in the fallback namespaces jail and an
+# ordinary account refuses to grade (python -m grader.sandbox says what this machine gives).
+bubblewrap:
+	@$(call apt_need,bwrap,bubblewrap,root grades in the fallback jail and an ordinary account refuses to grade)
 
 lab: warm
 	$(VENV)/bin/jupyter lab $(LAB_ROOT) $(LAB_ARGS) notebooks

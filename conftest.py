@@ -7,7 +7,7 @@ programs that talk on stdin (the sandbox's child bootstrap), never modules to im
 collect_ignore_glob = [
     "tests/grader/hostile/*",
     "tests/grader/fixtures/*",
-    "grader/child_bootstrap.py",
+    "grader/jail/child_bootstrap.py",
     "solutions/*",
     "assignments/*",
     "build/*",

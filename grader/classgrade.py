@@ -31,6 +31,7 @@ from typing import Iterable
 
 from .submissions import SubmissionError, read_submission_bytes
 from .text import clean, csv_cell
+from .jail import require_jail
 from .judge import Judge
 from .problems import load_problem
 from .store import ResultStore
@@ -224,6 +225,7 @@ def grade_class(problem: str, root: str | Path, db_path: str | Path, jobs: int =
     summaries += [{"student": st, "verdict": "", "score": 0, "max_score": max_score, "skipped": NO_SUBMISSION}
                   for st in empty]
     hide = tuple(str(Path(p).resolve()) for p in (root, Path(db_path).parent, report_dir) if p)
+    require_jail()  # no kernel jail for this account: refuse once, with the fixes, not JE per student
     # materialise tests once in the parent, before workers race for it
     n_tests = len(Judge(problem).tests)
     resumed = sum(len(store.prior(j.student, problem, j.sha)) for j in todo)

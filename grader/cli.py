@@ -32,6 +32,7 @@ from pathlib import Path
 
 from . import scoreboard as sb
 from . import timed
+from .jail import JailUnavailable, mechanism
 from .judge import Judge
 from .problems import list_problems, load_problem
 from .store import ResultStore
@@ -61,14 +62,22 @@ def _cmd_judge(a: argparse.Namespace) -> int:
     path = Path(a.file)
     if not path.is_file():
         raise ValueError(f"submission file {path} does not exist")
-    judge = Judge(a.problem, hide=[str(path.resolve().parent)])
+    judge = Judge(a.problem, hide=[str(path.resolve().parent)], trusted=True if a.trusted else None)
     result = judge.judge_path(path, follow_links=True)  # the file named on the command line
     if a.report:
         from .report import write_report
 
         write_report(result, a.report, judge.problem)
-    print(json.dumps(result.to_json(), indent=1) if a.json else format_table(result))
+    print(json.dumps(result.to_json(), indent=1) if a.json else format_table(result) + "\n" + judged_in())
     return 0 if result.verdict == "AC" else 1
+
+
+def judged_in() -> str:
+    """Which jail judged (the table's last line; ``--json`` has it as ``sandbox``)."""
+    mech = mechanism()
+    if mech == "trusted":
+        return "judged in the trusted mode: NO kernel jail (for your own code only; see python -m grader.sandbox)"
+    return f"judged in the jail: {mech}"
 
 
 def _cmd_grade(a: argparse.Namespace) -> int:
@@ -194,6 +203,9 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("file")
     p.add_argument("--json", action="store_true", help="one JSON object instead of the table")
     p.add_argument("--report", help="also write an HTML report here")
+    p.add_argument("--trusted", action="store_true",
+                   help="where no kernel jail can be built, judge without one (your own code only; the output "
+                        "says 'judged in the trusted mode')")
     p.set_defaults(func=_cmd_judge)
     p = sub.add_parser("grade", help="grade a class: SUBMISSIONS/<student>/<file>")
     p.add_argument("problem")
@@ -261,6 +273,9 @@ def main(argv: list[str] | None = None) -> int:
     except BrokenPipeError:  # `... | head`: the reader has gone; say nothing more
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 0
+    except JailUnavailable as exc:  # never judge without a jail unless asked (--trusted)
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
     except ValueError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2

@@ -22,7 +22,7 @@ from typing import Callable, Sequence
 
 from .problems import Problem, TestCase, load_problem
 from .runner import FunctionWorker, RunOutcome, idle_budget_for, run_stdio
-from .sandbox import Limits, Sandbox
+from .jail import Limits, Sandbox
 from .submissions import Submission, SubmissionError
 from .text import clean
 from .verdicts import JudgeResult, TestResult, Verdict
@@ -112,8 +112,12 @@ def _verdict_for(outcome: RunOutcome) -> tuple[Verdict, str]:
 class Judge:
     """Judges submissions for one problem; reusable (keeps the parsed tests)."""
 
-    def __init__(self, problem: Problem | str, hide: Sequence[str | os.PathLike] = (), stop_at_first_failure: bool = False):
+    def __init__(self, problem: Problem | str, hide: Sequence[str | os.PathLike] = (), stop_at_first_failure: bool = False,
+                 trusted: bool | None = None):
+        """``trusted``: where no kernel jail can be built, judge without one instead of raising
+        :class:`grader.jail.JailUnavailable` (a student's own code; default ``$GRADER_TRUSTED``)."""
         self.problem = load_problem(problem) if isinstance(problem, str) else problem
+        self.trusted = trusted
         self.stop_at_first_failure = stop_at_first_failure
         self.hide = list(hide)
         self.tests = self.problem.tests()
@@ -167,7 +171,7 @@ class Judge:
         failed_groups: set[str] = set()
         load_failure: tuple[Verdict, str] | None = None
         idle_left = idle_budget_for(self.problem.time_limit)
-        with Sandbox(self.limits, hide=self.hide, cover=self.cover) as box:
+        with Sandbox(self.limits, hide=self.hide, cover=self.cover, trusted=self.trusted) as box:
             worker = None
             if mode == "function":
                 budget = self.problem.time_limit * len(self.tests) + 30

@@ -40,6 +40,7 @@ from traitlets import Unicode
 
 from .course_notebooks import CHECK_ID, group_cell_id
 from .sample_check import is_sample_group
+from .jail import require_jail
 from .judge import Judge
 from .problems import Problem, load_problem
 from .store import ResultStore
@@ -150,6 +151,7 @@ class JudgeCells(NbGraderPreprocessor):
         return Path.cwd() / STORE_NAME
 
     def preprocess(self, nb, resources):
+        require_jail()  # never a silent downgrade: no kernel jail, no grading (the message names the fixes)
         info = resources["nbgrader"]
         problem = _problem(info["notebook"])
         store_path = self._store_path(resources)
@@ -248,6 +250,7 @@ def grade_course(problem_id: str, submitted: str | Path, jobs: int = 1, autograd
     """Judge every collected notebook ``submitted/<student>/<id>/<id>.ipynb`` in a pool of ``jobs``
     processes, then run ``nbgrader autograde`` (which finds the results stored and writes the same
     gradebook entries, autograded notebooks and late penalties as a one-by-one run)."""
+    require_jail()
     submitted = Path(submitted).resolve()
     course_root = submitted.parent
     if not submitted.is_dir():

@@ -21,15 +21,15 @@ import signal
 import sys
 import time
 from dataclasses import dataclass
-from pathlib import Path
 from typing import Any, Sequence
 
-from .engines import ENGINE_API, IMPORTED_BY_LIBRARIES, engine_libraries, engine_modules
-from .sandbox import Sandbox, python_roots
+from .jail import BOOTSTRAP_PATH, Sandbox, python_roots
+from .jail.cgroups import SAMPLE_S, ProcTree
+from .jail.engines import ENGINE_API, IMPORTED_BY_LIBRARIES, engine_libraries, engine_modules
 from .text import clean
 
 #: The child's program, passed with ``-c`` (the grader's directory is not visible in the jail).
-BOOTSTRAP_SOURCE = Path(__file__).with_name("child_bootstrap.py").read_text()
+BOOTSTRAP_SOURCE = BOOTSTRAP_PATH.read_text()
 CLK_TCK = os.sysconf("SC_CLK_TCK")
 
 
@@ -158,6 +158,13 @@ def _memory_limit_hit(box: Sandbox) -> bool:
         return box.group is not None and box.group.memory_limit_hit()
     except (OSError, ValueError):
         return False
+
+
+def _sample_s(box: Sandbox) -> float:
+    """How often a running test's CPU and idle time are sampled: 0.2 s, or
+    :data:`grader.jail.cgroups.SAMPLE_S` where the accounting is by samples of a process tree
+    (an ordinary account: the exiting process's last CPU is only known from them)."""
+    return SAMPLE_S if isinstance(box.group, ProcTree) else 0.2
 
 
 def _describe_signal(sig: int) -> str:
@@ -354,7 +361,7 @@ def _child_config(box: Sandbox, mode: str, entry: str, forbidden: Sequence[str],
     return {"mode": mode, "entry": entry, "forbidden": list(forbidden), "filename": filename,
             "read_roots": read_roots, "write_roots": [work], "engines": engine_modules(forbidden),
             "engine_api": ENGINE_API, "engine_libs": engine_libraries(forbidden),
-            "library_imports": list(IMPORTED_BY_LIBRARIES)}
+            "library_imports": list(IMPORTED_BY_LIBRARIES), "nproc": box.inner_nproc()}
 
 
 def _classify_death(child: _Child, memory_mb: float, limit_mb: int) -> RunOutcome:
@@ -363,6 +370,9 @@ def _classify_death(child: _Child, memory_mb: float, limit_mb: int) -> RunOutcom
         sig = -code
         if sig == signal.SIGXCPU:
             return RunOutcome("timeout", message="CPU time limit exceeded")
+        if sig == signal.SIGSYS:  # the seccomp filter of a non-root jail: a new process
+            return RunOutcome("violation", message="a forbidden system call (this jail lets a submission start no "
+                                                   "other process: fork, vfork, clone, posix_spawn)", memory_mb=memory_mb)
         if sig == signal.SIGKILL and memory_mb >= 0.9 * limit_mb:
             return RunOutcome("memory", message="killed near the memory limit", memory_mb=memory_mb)
         return RunOutcome("crash", message=_describe_signal(sig), memory_mb=memory_mb)
@@ -464,7 +474,7 @@ class FunctionWorker:
         deadline = wall0 + wall_limit
         cpu_exceeded = idle_exceeded = False
         while True:
-            reply = child.wait_reply(min(time.monotonic() + 0.2, deadline), want="id")
+            reply = child.wait_reply(min(time.monotonic() + _sample_s(self.box), deadline), want="id")
             if reply is not None:  # the reply to this call, a violation, or junk (see _Child)
                 break
             if child.exit_status is not None or time.monotonic() >= deadline:
@@ -571,7 +581,7 @@ def run_stdio(box: Sandbox, source: str, input_text: str, time_limit: float, for
     reply = None
     cpu_exceeded = junk = False
     while child.exit_status is None and time.monotonic() < deadline:
-        reply = child.wait_reply(min(time.monotonic() + 0.2, deadline), want="__never__")
+        reply = child.wait_reply(min(time.monotonic() + _sample_s(box), deadline), want="__never__")
         if reply is not None and "violation" in reply:
             break
         if reply is not None and ("garbled" in reply or "output_limit" in reply):

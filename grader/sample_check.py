@@ -61,7 +61,8 @@ def find_notebook(problem_id: str, cwd: Path | None = None) -> Path:
 def judge_samples(problem_id: str, notebook: Path) -> tuple[JudgeResult, Problem]:
     """Judge ``notebook`` on the samples of ``problem_id`` in the sandbox."""
     problem = sample_problem(load_problem(problem_id))
-    judge = Judge(problem, hide=[str(notebook.resolve().parent)])
+    # the student's own notebook: in the kernel jail where there is one, else in the trusted mode
+    judge = Judge(problem, hide=[str(notebook.resolve().parent)], trusted=True)
     return judge.judge_path(notebook), problem
 
 
@@ -123,7 +124,9 @@ def check_samples(line: str) -> None:
     entry_fn = ip.user_ns.get(problem.entry) if ip is not None else None
     png = picture_png(problem, result, entry_fn if callable(entry_fn) else None)
     img = f'<img alt="sample picture" src="data:image/png;base64,{base64.b64encode(png).decode()}">' if png else ""
-    display(HTML(f"<p>judged {html.escape(notebook.name)} as saved at {saved}</p>{table_html(result)}{img}"))
+    jail = html.escape(str(result.to_json().get("sandbox", "")))
+    display(HTML(f"<p>judged {html.escape(notebook.name)} as saved at {saved} (jail: {jail})</p>"
+                 f"{table_html(result)}{img}"))
 
 
 def load_ipython_extension(ipython) -> None:

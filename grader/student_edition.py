@@ -42,7 +42,9 @@ README = """# Delaunay course: student edition
   code cell, save, and run the "check on the samples" cell.
 * `assignments/<problem>/`: statements (`statement/problem.en.md`) and public samples.
 * `python -m grader list` and `python -m grader judge <problem> <file.py or .ipynb>`: the local
-  judge, on the samples only. Your grade comes from the course's hidden tests.
+  judge, on the samples only. Your grade comes from the course's hidden tests. It runs your code
+  in a kernel jail (bubblewrap); on a machine without one it refuses unless you add `--trusted`
+  (your own code, judged without a jail; the notebooks' check cell does this by itself).
 
 Install once: `python -m venv .venv && .venv/bin/pip install -e .`
 """

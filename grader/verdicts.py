@@ -113,7 +113,7 @@ class JudgeResult:
 
 def _sandbox_mechanism() -> str:
     """Which jail judged (``bwrap+cgroup-v1+seccomp``, ``namespaces+...``, ``rlimits``)."""
-    from .sandbox import mechanism  # late: verdicts stays importable without the sandbox
+    from .jail import mechanism  # late: verdicts stays importable without the sandbox
     return mechanism()
 
 

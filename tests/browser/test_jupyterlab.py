@@ -14,9 +14,13 @@ page shows and what the kernel holds:
   was rebuilt on them;
 * answers a predict-then-reveal question: the feedback appears and is right.
 
-Lesson 01 is opened and run too.  Screenshots are kept in build/screenshots/
-(the test's artifacts; ``notebooks/screenshots/`` holds committed copies).
-Playwright never downloads a browser here: it launches /usr/bin/chromium.
+Lesson 01 is opened and run too.  Each test opens its notebook in a workspace of its own,
+reset on load, and finds the notebook's widget by its path (a shared workspace restored the
+previous test's tab, whose kernel was gone, and the run waited on it for ever).  A cell that
+raises fails the test at once, naming the cell; a wait that times out saves
+``build/screenshots/timeout-<lesson>.png`` and says which cell was running.
+Screenshots are kept in build/screenshots/ (the test's artifacts; ``notebooks/screenshots/``
+holds committed copies).  Playwright never downloads a browser here: it launches /usr/bin/chromium.
 """
 from __future__ import annotations
 
@@ -31,6 +35,7 @@ import time
 import urllib.request
 from pathlib import Path
 
+import nbformat
 import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -38,6 +43,8 @@ CHROMIUM = shutil.which("chromium") or "/usr/bin/chromium"
 SHOTS = ROOT / "build" / "screenshots"
 LESSON_01 = "01-prerequisites.ipynb"
 LESSON_03 = "03-bowyer-watson-step-by-step.ipynb"
+PROBES = {"hangs.ipynb": ["x = 1", "import time; time.sleep(120)", "y = 2"],
+          "raises.ipynb": ["x = 1", "raise ValueError('boom at ' + str(x))", "y = 2"]}
 
 pytestmark = [pytest.mark.skipif(not os.path.exists(CHROMIUM),
                                  reason="Debian chromium is not installed (apt-get install chromium)"),
@@ -57,6 +64,10 @@ def lab(tmp_path_factory):
     root = tmp_path_factory.mktemp("lab")
     for name in (LESSON_01, LESSON_03):
         shutil.copy(ROOT / "notebooks" / name, root / name)
+    for name, cells in PROBES.items():   # notebooks that hang or raise: the waits' own failures
+        nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(c) for c in cells], metadata={
+            "kernelspec": {"name": "python3", "display_name": "Python 3", "language": "python"}})
+        nbformat.write(nb, root / name)
     config = root / "config"
     (config / "labconfig").mkdir(parents=True)
     (config / "labconfig" / "page_config.json").write_text(json.dumps(
@@ -103,24 +114,71 @@ def browser():
         b.close()
 
 
-OPEN_AND_READY = """async () => {
+# Every test opens its notebook in a workspace of its own, reset on load (``?reset``): a shared
+# workspace would restore the previous test's tabs, whose kernels the fixture has shut down, and
+# ``shell.currentWidget`` could then be that other notebook.  The widget of the notebook that was
+# asked for is found by its path and kept as ``window.__courseNb``; every later step uses it.
+FIND_NOTEBOOK = """(name) => {
     const app = window.jupyterapp;
-    const w = app.shell.currentWidget;
-    await w.context.ready;
-    await w.sessionContext.ready;
-    return w.sessionContext.session !== null;
+    if (!app || !app.shell) return false;
+    for (const w of app.shell.widgets('main')) {
+        if (w.context && w.context.path === name && w.sessionContext && w.content) {
+            window.__courseNb = w;
+            app.shell.activateById(w.id);
+            return true;
+        }
+    }
+    return false;
 }"""
 
-ALL_RUN = """() => {
-    const w = window.jupyterapp.shell.currentWidget;
-    const kernel = w.sessionContext.session && w.sessionContext.session.kernel;
-    if (!kernel || kernel.status !== 'idle') return false;
-    const code = w.content.widgets.filter(c => c.model.type === 'code');
-    return code.length > 0 && code.every(c => c.model.executionCount !== null);
+# Bounded: a notebook without a kernelspec would wait on JupyterLab's kernel dialog for ever.
+READY = """async () => {
+    const w = window.__courseNb;
+    const late = new Promise(resolve => setTimeout(() => resolve('late'), 60000));
+    const ready = Promise.all([w.context.ready, w.sessionContext.ready]).then(() => 'ready');
+    if (await Promise.race([ready, late]) === 'late') return false;
+    return window.jupyterapp.shell.currentWidget === w && w.sessionContext.session !== null;
+}"""
+
+KERNEL_IDLE = """() => { const s = window.__courseNb.sessionContext.session;
+    return !!(s && s.kernel && s.kernel.status === 'idle'); }"""
+
+# What the notebook is doing now, for the wait loop and for the message when it times out.
+RUN_STATE = """() => {
+    const w = window.__courseNb;
+    const s = w.sessionContext.session;
+    const kernel = s && s.kernel;
+    const cells = w.content.widgets;
+    let total = 0, done = 0, running = null, pending = null, error = null;
+    cells.forEach((c, i) => {
+        if (c.model.type !== 'code') return;
+        total += 1;
+        const prompt = c.node.querySelector('.jp-InputPrompt');
+        const head = c.model.sharedModel.getSource().split('\\n')[0].slice(0, 100);
+        if (prompt && prompt.textContent.includes('*')) {
+            if (running === null) running = {index: i, head};
+        } else if (c.model.executionCount !== null) {
+            done += 1;
+        } else if (pending === null) {
+            pending = {index: i, head};
+        }
+        if (error === null) {
+            for (let k = 0; k < c.model.outputs.length; k++) {
+                const out = c.model.outputs.get(k);
+                if (out.type === 'error') {
+                    const j = out.toJSON();
+                    error = {index: i, head, text: (j.ename || '') + ': ' + (j.evalue || '')};
+                    break;
+                }
+            }
+        }
+    });
+    return {kernel: kernel ? kernel.status : 'none', connection: kernel ? kernel.connectionStatus : 'none',
+            total, done, running, pending, error};
 }"""
 
 IN_KERNEL = """async (code) => {
-    const kernel = window.jupyterapp.shell.currentWidget.sessionContext.session.kernel;
+    const kernel = window.__courseNb.sessionContext.session.kernel;
     let text = '';
     const future = kernel.requestExecute({code, silent: false, store_history: false});
     future.onIOPub = msg => {
@@ -132,15 +190,73 @@ IN_KERNEL = """async (code) => {
 }"""
 
 
-def open_and_run(page, url: str, name: str) -> None:
-    page.goto(f"{url}/lab/tree/{name}")
-    page.wait_for_function("() => window.jupyterapp && window.jupyterapp.shell.currentWidget"
-                           " && window.jupyterapp.shell.currentWidget.sessionContext", timeout=120_000)
-    assert page.evaluate(OPEN_AND_READY)
-    page.wait_for_function("() => { const s = window.jupyterapp.shell.currentWidget.sessionContext.session;"
-                           " return s && s.kernel && s.kernel.status === 'idle'; }", timeout=120_000)
-    page.evaluate("() => window.jupyterapp.commands.execute('notebook:run-all-cells')")
-    page.wait_for_function(ALL_RUN, timeout=240_000, polling=500)
+def describe(state: dict) -> str:
+    """One line on a notebook's run: kernel state, cells done, the running and the next cell."""
+    def cell(c):
+        return f"cell {c['index']} ({c['head']!r})" if c else "none"
+    text = (f"kernel {state['kernel']} ({state['connection']}), {state['done']}/{state['total']} code cells run, "
+            f"running: {cell(state['running'])}, next not run: {cell(state['pending'])}")
+    if state.get("error"):
+        text += f", error in {cell(state['error'])}: {state['error']['text']}"
+    return text
+
+
+def fail_with_picture(page, name: str, what: str, lab_url: str | None = None) -> None:
+    """Save a screenshot named after the notebook, then fail saying what was being waited for."""
+    shot = SHOTS / f"timeout-{Path(name).stem}.png"
+    try:
+        page.screenshot(path=str(shot), full_page=False)
+    except Exception as exc:  # the page itself may be gone; the message still says what was waited for
+        shot = f"(no screenshot: {exc})"
+    try:
+        state = describe(page.evaluate(RUN_STATE))
+    except Exception as exc:
+        state = f"(no notebook state: {exc})"
+    pytest.fail(f"{name}: {what}; {state}; screenshot {shot}", pytrace=False)
+
+
+def wait_until(page, name: str, predicate: str, what: str, timeout_s: float, arg=None) -> None:
+    """Poll ``predicate`` in the page until it is true; on time-out, a picture and the notebook's state."""
+    deadline = time.monotonic() + timeout_s
+    while True:
+        try:
+            if page.evaluate(predicate, arg):
+                return
+        except sync_api.Error:
+            pass  # the page is still loading: window.jupyterapp or the widget is not there yet
+        if time.monotonic() > deadline:
+            fail_with_picture(page, name, f"timed out after {timeout_s:.0f} s waiting for {what}")
+        time.sleep(0.25)
+
+
+def open_and_run(page, url: str, name: str, timeout_s: float = 240.0) -> None:
+    """Open ``name`` in a fresh workspace, wait for an idle kernel, run every cell, wait until all ran.
+
+    Fails at once, with the cell and its error, when a cell raises (Run All stops there, so the
+    remaining cells would never run); on a time-out it saves ``build/screenshots/timeout-*.png``
+    and says which cell was running."""
+    workspace = f"t-{Path(name).stem}-{os.getpid()}-{time.monotonic_ns()}"
+    page.goto(f"{url}/lab/workspaces/{workspace}/tree/{name}?reset")
+    wait_until(page, name, FIND_NOTEBOOK, "the notebook's tab", 120, name)
+    if not page.evaluate(READY):
+        fail_with_picture(page, name, "the notebook did not become ready in 60 s (not the current tab,"
+                          " no session, or a dialog in the way)")
+    wait_until(page, name, KERNEL_IDLE, "an idle kernel", 120)
+    # Not awaited: the command's promise settles only when the last cell has run, and a page call
+    # that waits on it would hang without saying where; the loop below watches the cells instead.
+    page.evaluate("() => { window.jupyterapp.commands.execute('notebook:run-all-cells'); return true; }")
+    deadline = time.monotonic() + timeout_s
+    while True:
+        state = page.evaluate(RUN_STATE)
+        if state["error"] and state["kernel"] == "idle":
+            pytest.fail(f"{name}: a cell raised: {describe(state)}", pytrace=False)
+        if state["kernel"] in ("dead", "none") or state["connection"] == "disconnected":
+            fail_with_picture(page, name, "the kernel is gone")
+        if state["kernel"] == "idle" and state["total"] and state["done"] == state["total"]:
+            return
+        if time.monotonic() > deadline:
+            fail_with_picture(page, name, f"Run All did not finish in {timeout_s:.0f} s")
+        time.sleep(0.5)
 
 
 def kernel_says(page, code: str, expected: str, timeout: float = 20.0) -> str:
@@ -153,10 +269,13 @@ def kernel_says(page, code: str, expected: str, timeout: float = 20.0) -> str:
         time.sleep(0.3)
 
 
-def shut_down_kernel(page, url: str) -> None:
-    kid = page.evaluate("() => window.jupyterapp.shell.currentWidget.sessionContext.session.kernel.id")
-    req = urllib.request.Request(f"{url}/api/kernels/{kid}", method="DELETE")
-    urllib.request.urlopen(req, timeout=10).close()
+def shut_down_session(page, url: str) -> None:
+    """End the test's notebook session (and so its kernel) through the server's REST API."""
+    sid = page.evaluate("() => window.__courseNb && window.__courseNb.sessionContext.session"
+                        " ? window.__courseNb.sessionContext.session.id : null")
+    if sid:
+        req = urllib.request.Request(f"{url}/api/sessions/{sid}", method="DELETE")
+        urllib.request.urlopen(req, timeout=10).close()
 
 
 @pytest.fixture
@@ -166,7 +285,7 @@ def page(lab, browser):
     tab = browser.new_page(viewport={"width": 1400, "height": 1000})
     yield tab
     try:
-        shut_down_kernel(tab, lab)
+        shut_down_session(tab, lab)
     finally:
         tab.close()
 
@@ -243,3 +362,24 @@ def test_lesson_01_runs_in_chromium_and_its_picker_draws(lab, page):
         first.locator("img").first.get_attribute("src").startswith("data:")
     first.screenshot(path=str(SHOTS / "lesson01-picker.png"))
     page.screenshot(path=str(SHOTS / "lesson01.png"))
+
+
+def test_a_run_that_hangs_or_raises_says_which_cell(lab, page):
+    """The waits explain their own failures: the hanging cell named, with a screenshot; a raising
+    cell named with its error at once, not after the time-out."""
+    shot = SHOTS / "timeout-hangs.png"
+    shot.unlink(missing_ok=True)
+    with pytest.raises(pytest.fail.Exception) as hung:
+        open_and_run(page, lab, "hangs.ipynb", timeout_s=4)
+    message = str(hung.value)
+    assert "hangs.ipynb: Run All did not finish in 4 s" in message, message
+    assert "running: cell 1 ('import time; time.sleep(120)')" in message, message
+    assert "1/3 code cells run" in message, message
+    assert shot.exists() and shot.stat().st_size > 0
+    shut_down_session(page, lab)
+
+    with pytest.raises(pytest.fail.Exception) as raised:
+        open_and_run(page, lab, "raises.ipynb", timeout_s=120)
+    message = str(raised.value)
+    assert "raises.ipynb: a cell raised" in message, message
+    assert "ValueError: boom at 1" in message and "cell 1 (" in message, message

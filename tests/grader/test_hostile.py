@@ -1,21 +1,29 @@
 """The hostile corpus: every file in tests/grader/hostile/ states its expected verdict on its
 first line (``# expect: VERDICT``). Each must get exactly that verdict (never JE), leave no
 process behind, and leave the checkout unchanged.  In the corpus, the path ``/work/main``
-stands for "the checkout under test": it is replaced by the real path before judging, so the
-attacks aim at this checkout wherever it was cloned.
+stands for "the checkout under test", ``/home/instructor`` for a directory in the grading
+account's home (a gradebook, a class folder: :func:`instructor_home`) and ``/grader-cache`` for
+the grader's test cache: they are replaced by the real paths before judging, so the attacks aim
+at this checkout and this account wherever they are. tests/grader/test_jail_user.py runs this
+file as an ordinary user too.
 
 Run: .venv/bin/python -m pytest tests/grader/test_hostile.py -q
 """
 from __future__ import annotations
 
+import hashlib
 import json
 import os
 import re
 import resource
+import shutil
+import sqlite3
 from pathlib import Path
 
 import pytest
 
+from grader.jail import refuses_processes
+from grader.problems import cache_root
 from grader.store import ResultStore
 from grader.verdicts import Verdict, format_table
 
@@ -25,33 +33,77 @@ CORPUS = sorted((HERE / "hostile").glob("*.py"))
 WATCHED = ("grader", "assignments", "solutions", "tests/grader")
 
 
+#: A header line giving the verdict where the jail refuses new processes (an ordinary user's jail).
+NO_PROCESSES = "# expect when the jail refuses processes: "
+
+
 def expected(path: Path) -> str:
-    first = path.read_text().splitlines()[0]
-    assert first.startswith("# expect: "), f"{path.name} must start with '# expect: VERDICT'"
-    return first.split(":", 1)[1].strip()
+    """The verdict the file's header promises for the jail this run judges in."""
+    lines = path.read_text().splitlines()
+    assert lines[0].startswith("# expect: "), f"{path.name} must start with '# expect: VERDICT'"
+    other = [ln for ln in lines[1:6] if ln.startswith(NO_PROCESSES)]
+    if other and refuses_processes():
+        return other[0][len(NO_PROCESSES):].strip()
+    return lines[0].split(":", 1)[1].strip()
 
 
 @pytest.fixture(scope="module")
-def checkout_guard():
+def instructor_home():
+    """Files of the grading account that submissions attack (:func:`instructor_files`), in its
+    home; removed afterwards."""
+    top = instructor_files(Path.home() / f".grader-hostile-{os.getpid()}")
+    yield top
+    shutil.rmtree(top, ignore_errors=True)
+
+
+def instructor_files(top: Path) -> Path:
+    """A gradebook (text and nbgrader's sqlite) and a classmate's submission under ``top``."""
+    (top / "submitted" / "bob").mkdir(parents=True)
+    (top / "gradebook.txt").write_text("alice 10\nmallory 0\n")
+    (top / "submitted" / "bob" / "delaunay.py").write_text("def delaunay(points):\n    return []\n")
+    db = sqlite3.connect(top / "gradebook.db")
+    db.execute("CREATE TABLE grade (student TEXT, score REAL)")
+    db.execute("INSERT INTO grade VALUES ('mallory', 0)")
+    db.commit()
+    db.close()
+    return top
+
+
+def _files_digest(*tops: Path) -> str:
+    h = hashlib.sha256()
+    for top in tops:
+        for p in sorted(top.rglob("*")) if top.is_dir() else []:
+            h.update(str(p).encode() + (p.read_bytes() if p.is_file() else b""))
+    return h.hexdigest()
+
+
+@pytest.fixture(scope="module")
+def checkout_guard(instructor_home):
     before = tree_digest(*WATCHED)
+    theirs = _files_digest(instructor_home, cache_root())
     yield
     assert tree_digest(*WATCHED) == before, "a hostile submission changed the checkout"
+    assert _files_digest(instructor_home, cache_root()) == theirs, "a hostile submission changed the account's files"
     assert not Path("/tmp/pwned-by-student").exists()
     assert not (HERE.parent.parent / "pwned.txt").exists()
 
 
-def aimed_at_this_checkout(path: Path, tmp_path: Path) -> Path:
-    text = path.read_text()
-    if "/work/main" not in text:
+def aimed_at_this_checkout(path: Path, tmp_path: Path, home: Path | None = None) -> Path:
+    """``path`` with the corpus's stand-in paths replaced by the real ones (see the docstring)."""
+    text = original = path.read_text()
+    for stand_in, real in (("/work/main", HERE.parent.parent), ("/home/instructor", home), ("/grader-cache", cache_root())):
+        if real is not None:
+            text = text.replace(stand_in, str(real))
+    if text == original:
         return path
     out = tmp_path / path.name
-    out.write_text(text.replace("/work/main", str(HERE.parent.parent)))
+    out.write_text(text)
     return out
 
 
 @pytest.mark.parametrize("path", CORPUS, ids=[p.stem for p in CORPUS])
-def test_hostile_submission_gets_its_verdict(path: Path, tiny_judge, checkout_guard, tmp_path):
-    result = tiny_judge.judge_path(aimed_at_this_checkout(path, tmp_path))
+def test_hostile_submission_gets_its_verdict(path: Path, tiny_judge, checkout_guard, instructor_home, tmp_path):
+    result = tiny_judge.judge_path(aimed_at_this_checkout(path, tmp_path, instructor_home))
     verdicts = [t.verdict for t in result.tests]
     assert Verdict.JE not in verdicts, [t.message for t in result.tests if t.verdict == Verdict.JE]
     assert result.verdict == expected(path), [(t.name, str(t.verdict), t.message[:200]) for t in result.tests]

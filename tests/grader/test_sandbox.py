@@ -16,7 +16,7 @@ import pytest
 
 from grader import cgroups, engines, seccomp
 from grader.runner import FunctionWorker
-from grader.sandbox import JAIL_ENV, Limits, Sandbox, bwrap_path, is_root, jail_kind
+from grader.sandbox import JAIL_ENV, TRUSTED_ENV, Limits, Sandbox, bwrap_path, is_root, jail_kind
 from grader.verdicts import Verdict
 
 from .conftest import HERE
@@ -92,14 +92,16 @@ def test_a_notebook_that_plots_with_pyplot_is_accepted(tiny_judge, tmp_path):
     assert r.verdict == "AC", [(t.verdict.value, t.message[:300]) for t in r.tests]
 
 
-def test_pyplot_works_without_root_too(monkeypatch, tiny_judge):
-    """The not-root path (a student checking their own code): no jail, but the same pre-built
-    font cache, so matplotlib does not run fc-list (a forbidden subprocess)."""
+def test_pyplot_works_in_the_trusted_mode_too(monkeypatch, tiny_judge):
+    """The trusted mode (a student checking their own code where no jail can be built): no jail,
+    but the same pre-built font cache, so matplotlib does not run fc-list (a forbidden subprocess)."""
     import grader.sandbox as sandbox
     monkeypatch.setattr(sandbox, "is_root", lambda: False)
+    monkeypatch.setenv(JAIL_ENV, "none")
+    monkeypatch.setenv(TRUSTED_ENV, "1")
     r = tiny_judge.judge_path(HOSTILE / "pyplot_plots.py")
     assert r.verdict == "AC", [(t.verdict.value, t.message[:300]) for t in r.tests]
-    assert r.to_json()["sandbox"] == "rlimits"
+    assert r.to_json()["sandbox"] == "trusted"
 
 
 def test_allowed_libraries_import_and_work_where_their_neighbours_are_forbidden(tiny_judge):
@@ -158,32 +160,44 @@ def test_memory_of_forked_helpers_is_charged_without_cgroups_too(monkeypatch, ti
     assert r.verdict == "MLE", [(t.verdict.value, t.memory_mb, t.message[:200]) for t in r.tests]
 
 
-def test_seccomp_filter_denies_namespaces_and_ptrace_but_not_fork_or_threads():
-    prog = seccomp.program()
-    if prog is None:
-        pytest.skip("seccomp filter only for x86-64")
+def _in_child(work) -> object:
+    """``work(write_fd)`` in a forked child (which it may make irreversible: seccomp); what the
+    child wrote on the pipe, as JSON (an exception's repr if ``work`` raised)."""
     r, w = os.pipe()
     pid = os.fork()
     if pid == 0:  # pragma: no cover - child
         try:
-            seccomp.install(prog)
-            libc = ctypes.CDLL(None, use_errno=True)
-            res = [libc.unshare(0x10000000), ctypes.get_errno(), libc.ptrace(0, 0, None, None), ctypes.get_errno()]
-            t = threading.Thread(target=lambda: res.append("thread"))
-            t.start()
-            t.join()
-            q = os.fork()
-            if q == 0:
-                os._exit(7)
-            res.append(os.waitstatus_to_exitcode(os.waitpid(q, 0)[1]))
-            os.write(w, json.dumps(res).encode())
+            os.write(w, json.dumps(work(w)).encode())
+        except BaseException as exc:  # noqa: BLE001
+            os.write(w, json.dumps([repr(exc)]).encode())
         finally:
             os._exit(0)
     os.close(w)
     data = os.read(r, 1000)
+    os.close(r)
     os.waitpid(pid, 0)
+    return json.loads(data)
+
+
+def test_seccomp_filter_denies_namespaces_and_ptrace_but_not_fork_or_threads():
+    prog = seccomp.program()
+    if prog is None:
+        pytest.skip("seccomp filter only for x86-64")
+
+    def work(_w: int) -> list:
+        seccomp.install(prog)
+        libc = ctypes.CDLL(None, use_errno=True)
+        res = [libc.unshare(0x10000000), ctypes.get_errno(), libc.ptrace(0, 0, None, None), ctypes.get_errno()]
+        t = threading.Thread(target=lambda: res.append("thread"))
+        t.start()
+        t.join()
+        q = os.fork()
+        if q == 0:
+            os._exit(7)
+        return res + [os.waitstatus_to_exitcode(os.waitpid(q, 0)[1])]
+
     import errno
-    assert json.loads(data) == [-1, errno.EPERM, -1, errno.EPERM, "thread", 7]
+    assert _in_child(work) == [-1, errno.EPERM, -1, errno.EPERM, "thread", 7]
 
 
 def test_engines_are_covered_in_every_copy_and_under_every_name(tmp_path, monkeypatch):
@@ -204,3 +218,77 @@ def test_engines_are_covered_in_every_copy_and_under_every_name(tmp_path, monkey
     assert not any("tri" in p.split("/")[-1] and "matplotlib" in p for p in covered if p.endswith("tri"))
     assert str(venv / "scipy/spatial") not in covered
     assert engines.modules_of([str(files[0])]) == ["scipy.spatial._qhull"]
+
+
+@root_only
+@pytest.mark.parametrize("kind", [*JAILS, "user"])
+def test_hidden_paths_under_usr_are_hidden_too(kind, monkeypatch, tmp_path):
+    """A course kept under /usr/local (its class folder, results, reports) is hidden like one
+    anywhere else (issue 23, item 4: the bubblewrap jail bound all of /usr); "user" is the
+    ordinary user's bubblewrap jail (run here as root with is_root patched)."""
+    import grader.sandbox as sandbox
+    if kind == "user":
+        monkeypatch.setattr(sandbox, "is_root", lambda: False)
+        if sandbox.jail_kind() != "bwrap":
+            pytest.skip("bubblewrap cannot create a user namespace here")
+    else:
+        _jail(monkeypatch, kind)
+    course = Path(f"/usr/local/share/grader-hidden-{os.getpid()}")
+    (course / "submitted" / "bob").mkdir(parents=True)
+    secret = course / "submitted" / "bob" / "delaunay.py"
+    secret.write_text("# bob's\n")
+    src = ("import ctypes\nlibc = ctypes.CDLL(None)\nlibc.opendir.restype = ctypes.c_void_p\n"
+           f"def f():\n    return [libc.open({str(secret).encode()!r}, 0) >= 0, bool(libc.opendir({str(course / 'submitted').encode()!r}))]\n")
+    try:
+        with Sandbox(Limits(cpu_s=5, memory_mb=256), hide=[course]) as box:
+            w = FunctionWorker(box, src, "f", forbidden=[])
+            out = w.call([], 5)
+            w.stop()
+    finally:
+        shutil.rmtree(course, ignore_errors=True)
+    assert (out.status, out.value) == ("ok", [False, False]), out
+
+
+def test_seccomp_installs_after_the_open_files_limit_is_reached():
+    """Issue 23, item 9: the child installs the filter after RLIMIT_NOFILE is set; looking libc
+    up then (ctypes.util.find_library opens temporary files) failed with EMFILE, JE on every test
+    of a notebook's judge. libc is resolved when the module is imported, in the parent."""
+    import resource
+    prog = seccomp.program()
+    if prog is None:
+        pytest.skip("seccomp filter only for x86-64")
+
+    def work(w: int) -> list:
+        resource.setrlimit(resource.RLIMIT_NOFILE, (w + 1, w + 1))  # no descriptor left to open
+        try:
+            open("/dev/null").close()
+            full = False
+        except OSError:
+            full = True
+        seccomp.install(prog)
+        return ["installed", full]
+
+    assert _in_child(work) == ["installed", True]
+
+
+@root_only
+@pytest.mark.parametrize("kind", [*JAILS, "account"])
+def test_judge_file_from_a_notebook_kernel(kind, tmp_path):
+    """Issue 23, item 9: judging from a Jupyter kernel (many descriptors already open when the
+    child sets RLIMIT_NOFILE before exec) gives the submission's verdict in every jail, not JE;
+    "account" is the ordinary account's jail (is_root patched inside the kernel)."""
+    import nbformat
+    from nbclient import NotebookClient
+    if kind == "bwrap" and (bwrap_path() is None or jail_kind() != "bwrap"):
+        pytest.skip("bubblewrap is not installed or cannot create a user namespace here")
+    patch = "import grader.sandbox as s; s.is_root = lambda: False\n" if kind == "account" else ""
+    env = "" if kind == "account" else f"os.environ[{JAIL_ENV!r}] = {kind!r}\n"
+    code = (f"import os, json\n{env}{patch}from grader.judge import judge_file\nfrom grader.problems import Problem\n"
+            f"r = judge_file(Problem.load({str(HERE / 'fixtures' / 'tiny-delaunay')!r}), "
+            f"{str(HOSTILE / 'wrong_type.py')!r})\n"
+            "print(json.dumps([r.verdict, sorted({str(t.verdict) for t in r.tests}), r.to_json()['sandbox']]))\n")
+    nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(code)])
+    NotebookClient(nb, timeout=300, resources={"metadata": {"path": str(tmp_path)}}).execute()
+    verdict, verdicts, mech = json.loads(nb.cells[0].outputs[-1]["text"])
+    assert verdict == "PE" and "JE" not in verdicts, (verdicts, nb.cells[0].outputs)
+    assert mech.startswith("bwrap+proc-tree" if kind == "account" else kind), mech

@@ -1,10 +1,16 @@
 # expect: TLE
+# expect when the jail refuses processes: SV
 # The worker forks (raw libc, past the audit hook) two helpers that do about 1.5 CPU-seconds of
 # work each, and waits for them on a pipe: its own CPU stays near zero. Charging only the
 # worker's /proc entry, this was AC on a quiet machine (3 CPU-seconds reported as 0.001 s); the
 # whole sandbox (its cgroup) is charged now: TLE, on a loaded machine too.
+# It proves its helpers ran: a fork that fails for want of a process slot (EAGAIN: an earlier
+# test's reaper not yet collected by the host's init, on a busy machine) is retried, and if
+# fewer than two helpers report back the answer is an error (RE), never a quiet AC (seen once in
+# 1993 runs). An ordinary user's jail refuses the fork itself: SV.
 import ctypes
 import os
+import time
 from fractions import Fraction
 from itertools import combinations
 
@@ -41,14 +47,26 @@ def brute_force(points):
     return out
 
 
+def fork():
+    for _ in range(100):
+        pid = libc.fork()
+        if pid >= 0:
+            return pid
+        time.sleep(0.02)
+    return -1
+
+
 def delaunay(points):
     r, w = os.pipe()
     for _ in range(2):
-        if libc.fork() == 0:
+        if fork() == 0:
             work()
             os.write(w, b"x")
             os._exit(0)
     os.close(w)
-    while os.read(r, 2):  # blocks without CPU until both helpers are done (end of file)
-        pass
+    done = b""
+    while chunk := os.read(r, 2):  # blocks without CPU until both helpers are done (end of file)
+        done += chunk
+    if done != b"xx":
+        raise RuntimeError(f"only {len(done)} of 2 helpers ran")
     return brute_force(points)

@@ -1,4 +1,5 @@
 # expect: MLE
+# expect when the jail refuses processes: SV
 # Three raw-libc forked helpers each fill 120 MB (360 MB for a 256 MB problem) while the worker
 # itself stays small and answers. Measuring only the worker, it was judged on its answer (WA
 # here) with 13 MB reported; the whole sandbox's memory (its cgroup) is limited and charged now.

@@ -347,6 +347,9 @@ def _read_lines(fd):
 
 
 def main():
+    if CONFIG.get("nproc"):  # not root: set here, inside the sandbox's user namespace (see Sandbox.inner_nproc)
+        import resource
+        resource.setrlimit(resource.RLIMIT_NPROC, (CONFIG["nproc"], CONFIG["nproc"]))
     lines = _read_lines(CTL_IN)
     first = json.loads(next(lines))
     sys.argv = [SUBMISSION_FILE]

@@ -1,0 +1,38 @@
+"""The grader's jail: everything that keeps student code from the grader's machine, in one place.
+
+One entry point: :class:`Sandbox` (with :class:`Limits`) starts jailed children; the runner
+(:mod:`grader.runner`) talks to them. The modules, none importing a module that imports it back:
+
+========================  =================================================================
+``sandbox``               the jail: which kind (:func:`jail_kind`), uid slots, rlimits, cleanup
+``mounts``                root's child side: staging for bubblewrap, the ``namespaces`` jail
+``cgroups``               accounting of a whole sandbox: cgroup v1/v2, ``/proc`` sums
+``seccomp``               the seccomp-BPF filter (denied calls; no new processes, not root)
+``engines``               every installed copy of the forbidden packages and engines
+``fontcache``             matplotlib's font cache, built outside the jail
+``paths``, ``procs``      path and process-table helpers
+``doctor``                ``python -m grader.jail``: what this machine gives to root and to this user
+``child_bootstrap.py``    the child side (stdlib only, run by path, never imported)
+========================  =================================================================
+
+The old names ``grader.sandbox``, ``grader.cgroups``, ``grader.seccomp``, ``grader.engines`` and
+``grader.fontcache`` are the same module objects as the ones here (monkeypatching either works).
+
+Example:
+    >>> from grader.jail import Limits, Sandbox
+    >>> Limits(cpu_s=1).cpu_s
+    1
+"""
+
+from pathlib import Path
+
+from .sandbox import (JAIL_ENV, JAIL_WORKDIR, LOCK_DIR, TRUSTED_ENV, UID_BASE, JailUnavailable, Limits, Sandbox,
+                      bwrap_path, is_root, jail_kind, mechanism, python_roots, refusal_message, refuses_processes,
+                      require_jail, uid_processes)
+
+#: The child's program (run with ``python -I -c``; the grader's directory is not visible in the jail).
+BOOTSTRAP_PATH = Path(__file__).with_name("child_bootstrap.py")
+
+__all__ = ["BOOTSTRAP_PATH", "JAIL_ENV", "JAIL_WORKDIR", "LOCK_DIR", "TRUSTED_ENV", "UID_BASE", "JailUnavailable",
+           "Limits", "Sandbox", "bwrap_path", "is_root", "jail_kind", "mechanism", "python_roots", "refusal_message",
+           "refuses_processes", "require_jail", "uid_processes"]

@@ -1,0 +1,145 @@
+"""Running part of the suite as an ordinary (non-root) account, from a root test run (CI is root).
+
+:func:`run_as_user` starts a command as ``USER`` (created with ``useradd`` when missing) in a
+private mount namespace of its own, where
+
+* the directories it must read but cannot enter (the interpreter under ``/root/.pyenv``, mode
+  0700 above it, or a checkout cloned under a 0700 directory) are re-bound under an empty,
+  world-traversable tmpfs laid over the blocking directory, read-only as before: nothing on the
+  host changes mode or owner;
+* the checkout's numba caches (``__pycache__`` with ``.nbi`` files) are replaced by writable
+  copies owned by the user, so numba loads what ``make warm`` compiled instead of compiling
+  everything again (about 60 s of 2 CPUs);
+* the grader's test cache (``GRADER_CACHE``) is a copy the user owns: the "instructor's"
+  ``.cache/grader``.
+
+The account is an ordinary one in every way the jail cares about: a uid without capabilities,
+its own home, ``os.geteuid() != 0``.
+
+Example:
+    >>> run_as_user(["id", "-u"]).stdout.strip() != "0"          # doctest: +SKIP
+    True
+"""
+from __future__ import annotations
+
+import fcntl
+import os
+import pwd
+import shutil
+import stat
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+from typing import Sequence
+
+from grader.jail.mounts import CLONE_NEWNS, MS_BIND, MS_PRIVATE, MS_RDONLY, MS_REC, MS_REMOUNT, mount, unshare
+from grader.jail.paths import outermost, python_roots
+
+REPO = Path(__file__).resolve().parents[2]
+USER = "grader-instructor"
+
+
+def ensure_user(name: str = USER) -> pwd.struct_passwd:
+    """The account ``name``, created (with a home directory) when missing; root only."""
+    try:
+        return pwd.getpwnam(name)
+    except KeyError:
+        subprocess.run(["useradd", "--create-home", "--shell", "/bin/sh", name], check=True,
+                       stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+        return pwd.getpwnam(name)
+
+
+def can_run() -> str:
+    """'' when :func:`run_as_user` can work here, else why not (for a skip message)."""
+    if os.geteuid() != 0:
+        return "needs root to create the ordinary account (CI runs as root)"
+    if shutil.which("useradd") is None:
+        return "useradd is missing"
+    return ""
+
+
+def _blocker(path: str) -> str | None:
+    """The outermost ancestor of ``path`` that other users cannot enter (mode without o+x)."""
+    parts = Path(path).parts
+    for k in range(2, len(parts) + 1):
+        d = os.path.join(*parts[:k])
+        if not os.stat(d).st_mode & stat.S_IXOTH:
+            return d
+    return None
+
+
+def _numba_caches() -> list[Path]:
+    return sorted({p.parent for p in (REPO / "reference_impl").rglob("*.nbi")})
+
+
+def run_as_user(argv: Sequence[str], env: dict[str, str] | None = None, timeout: float = 1800,
+                user: str = USER) -> subprocess.CompletedProcess:
+    """Run ``argv`` as ``user`` (see the module docstring) with cwd = the checkout; output captured.
+    One run at a time per account (a lock): the account's tests count its processes."""
+    with open(os.path.join(tempfile.gettempdir(), f"{user}.lock"), "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        return _run_as_user(argv, env, timeout, user)
+
+
+def _run_as_user(argv: Sequence[str], env: dict[str, str] | None, timeout: float, user: str) -> subprocess.CompletedProcess:
+    pw = ensure_user(user)
+    uid, gid = pw.pw_uid, pw.pw_gid
+    scratch = Path(tempfile.mkdtemp(prefix="grader-as-user-"))
+    os.chmod(scratch, 0o711)
+    need = outermost(sorted({*python_roots(), str(REPO)}))
+    blocked = {p: b for p in need if (b := _blocker(p))}
+    copies = []
+    for k, cache in enumerate(_numba_caches()):
+        copy = scratch / "numba" / str(k)
+        shutil.copytree(cache, copy)
+        copies.append((copy, cache))
+    grader_cache = scratch / "grader-cache"
+    if (REPO / ".cache" / "grader").is_dir():
+        shutil.copytree(REPO / ".cache" / "grader", grader_cache)
+    else:
+        grader_cache.mkdir()
+    for d in (scratch / "numba", grader_cache, scratch / "numba-user"):
+        d.mkdir(exist_ok=True)
+        for p in [d, *d.rglob("*")]:
+            os.lchown(p, uid, gid)
+    staging = scratch / "staging"
+    staging.mkdir()
+
+    def enter() -> None:  # runs as root in the forked child, before exec
+        if not unshare(CLONE_NEWNS):
+            raise OSError("unshare(CLONE_NEWNS) failed")
+        mount(None, "/", None, MS_REC | MS_PRIVATE)
+        mount("tmpfs", str(staging), "tmpfs", 0, "mode=700")
+        staged = {}
+        for k, p in enumerate(blocked):
+            st = os.path.join(staging, str(k))
+            os.mkdir(st)
+            mount(p, st, None, MS_BIND | MS_REC)
+            staged[p] = st
+        for b in outermost(sorted(set(blocked.values()))):
+            mount("tmpfs", b, "tmpfs", 0, "mode=755")
+        for p, st in staged.items():
+            os.makedirs(p, exist_ok=True)
+            mount(st, p, None, MS_BIND | MS_REC)
+            mount(None, p, None, MS_BIND | MS_REMOUNT | MS_RDONLY)
+        for copy, cache in copies:
+            mount(str(copy), str(cache), None, MS_BIND)
+        os.setgroups([])
+        os.setresgid(gid, gid, gid)
+        os.setresuid(uid, uid, uid)
+
+    base = {"PATH": "/usr/local/bin:/usr/bin:/bin", "HOME": pw.pw_dir, "USER": user, "LANG": "C.UTF-8",
+            "PYTHONDONTWRITEBYTECODE": "1", "GRADER_CACHE": str(grader_cache),
+            "NUMBA_CACHE_DIR": str(scratch / "numba-user"), "TMPDIR": "/tmp"}
+    try:
+        return subprocess.run(list(argv), cwd=REPO, env={**base, **(env or {})}, preexec_fn=enter, timeout=timeout,
+                              stdin=subprocess.DEVNULL, capture_output=True, text=True)
+    finally:
+        shutil.rmtree(scratch, ignore_errors=True)
+
+
+if __name__ == "__main__":  # python tests/grader/ordinary_user.py CMD...: try a command as the user
+    r = run_as_user(sys.argv[1:])
+    print(r.stdout, r.stderr, sep="", end="")
+    sys.exit(r.returncode)
