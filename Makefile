@@ -7,16 +7,25 @@ PYTHON ?= python3
 VENV   ?= .venv
 PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed
+LAB_OVERRIDES := $(VENV)/share/jupyter/lab/settings/overrides.json
 
 .PHONY: setup warm demo test lab bench clean chromium bubblewrap
 
-setup: $(STAMP)
+setup: $(STAMP) $(LAB_OVERRIDES)
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install --quiet --upgrade pip
 	$(PY) -m pip install --quiet -e '.[dev]'
 	touch $(STAMP)
+
+# JupyterLab does not save widget state by default, and a saved lesson reopened without running
+# then shows "Error displaying widget: model not found" where every widget was (JupyterLab renders
+# only the widget view of an output, never the PNG beside it). The venv's overrides.json turns
+# saving on for this JupyterLab: reopened, every widget shows its last picture (checked in chromium).
+$(LAB_OVERRIDES): $(STAMP)
+	mkdir -p $(dir $(LAB_OVERRIDES))
+	echo '{"@jupyter-widgets/jupyterlab-manager:plugin": {"saveState": true}}' > $(LAB_OVERRIDES)
 
 # Compile every numba kernel into numba's cache (a few seconds when nothing changed), so that
 # no lesson, problem or test waits for a compile; see reference_impl/warmup.py.
@@ -52,7 +61,7 @@ chromium:
 bubblewrap:
 	@$(call apt_need,bwrap,bubblewrap,root grades in the fallback jail and an ordinary account refuses to grade)
 
-lab: warm
+lab: warm $(LAB_OVERRIDES)
 	$(VENV)/bin/jupyter lab $(LAB_ROOT) $(LAB_ARGS) notebooks
 
 bench: warm

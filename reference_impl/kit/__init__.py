@@ -13,6 +13,7 @@ and the library never import ipywidgets):
 * ``PredictReveal`` / ``PredictRevealMany`` (quiz.py): commit to an answer, then see it;
 * ``MeasurePanel`` (measure.py): choose n, run, plot the timings log-log;
 * ``TimedPractice`` (timer.py): a countdown and the judge's ``timed submit`` one click away;
+* ``progress`` (progress.py): one output line that says how far a long cell has got;
 * ``render`` (render.py): the drawing helpers they share.
 
 Every widget also carries a static PNG for notebooks run without a browser.
@@ -29,7 +30,7 @@ from __future__ import annotations
 import os
 
 __all__ = ["StepPlayer", "PickAndStep", "PointPicker", "PredictReveal", "PredictRevealMany", "MeasurePanel",
-           "TimedPractice", "quick_mode", "pick"]
+           "TimedPractice", "quick_mode", "pick", "progress"]
 
 
 def quick_mode() -> bool:
@@ -52,6 +53,7 @@ def pick(quick, full):
 
 from .measure import MeasurePanel  # noqa: E402
 from .picker import PointPicker  # noqa: E402
+from .progress import progress  # noqa: E402
 from .player import PickAndStep, StepPlayer  # noqa: E402
 from .quiz import PredictReveal, PredictRevealMany  # noqa: E402
 from .timer import TimedPractice  # noqa: E402

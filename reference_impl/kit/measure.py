@@ -83,7 +83,7 @@ class MeasurePanel(KitWidget):
                           self.image, self.table])
         self.add_class("kit-measure-panel")
         self.measure_button.on_click(self.guard(lambda _: self.measure(self.n.value)))
-        self.all_button.on_click(self.guard(lambda _: self.measure_all()))
+        self.all_button.on_click(self.guard(lambda _: self.measure_all(show_progress=False)))
         self._render()
 
     def measure(self, n: int) -> dict[str, float]:
@@ -96,10 +96,15 @@ class MeasurePanel(KitWidget):
         self._render()
         return timings
 
-    def measure_all(self) -> dict[str, dict[int, float]]:
-        """Measure at every n of the slider, smallest first."""
-        for n in self.ns:
+    def measure_all(self, *, show_progress: bool = True) -> dict[str, dict[int, float]]:
+        """Measure at every n of the slider, smallest first (a progress line says which n runs)."""
+        from .progress import Progress
+
+        line = Progress(self.label or "measuring", len(self.ns), show=show_progress)
+        for k, n in enumerate(self.ns):
+            line.step(k, f"n = {n}")
             self.measure(n)
+        line.done()
         return self.results
 
     def slope(self, name: str) -> float:

@@ -53,11 +53,15 @@ def _grid(bounds: Bounds, n: int) -> np.ndarray:
 def _circle(bounds: Bounds, n: int) -> np.ndarray:
     x0, y0, x1, y1 = bounds
     cx, cy, r = (x0 + x1) / 2, (y0 + y1) / 2, 0.38 * min(x1 - x0, y1 - y0)
-    # the 8 "Pythagorean" points of a 5-circle are exactly cocircular; more points use angles
+    # the 12 integer points of x^2 + y^2 = 25, scaled by a power of two and centred on a multiple
+    # of it, so that every coordinate is exact in binary and every four are exactly cocircular
+    # (exact incircle 0); more points use angles and are cocircular only up to rounding
     if n <= 12:
         unit = [(5, 0), (4, 3), (3, 4), (0, 5), (-3, 4), (-4, 3), (-5, 0), (-4, -3), (-3, -4),
                 (0, -5), (3, -4), (4, -3)]
-        return np.array([(cx + r * u / 5, cy + r * v / 5) for u, v in unit[:max(4, n)]])
+        step = 2.0 ** math.floor(math.log2(r / 5))
+        cx, cy = round(cx / step) * step, round(cy / step) * step
+        return np.array([(cx + step * u, cy + step * v) for u, v in unit[:max(4, n)]])
     t = np.linspace(0, 2 * np.pi, n, endpoint=False)
     return np.column_stack([cx + r * np.cos(t), cy + r * np.sin(t)])
 
@@ -91,6 +95,11 @@ PRESETS: dict[str, Callable[[Bounds, int], np.ndarray]] = {
     "random": _random,
 }
 """Preset point sets: name -> f(bounds, n) -> (k, 2) points ("tutorial" ignores both)."""
+
+
+def _count(k: int, word: str) -> str:
+    """``k`` and ``word``, plural unless k is 1: ``_count(1, "triangle") == "1 triangle"``."""
+    return f"{k} {word}" if k == 1 else f"{k} {word}s"
 
 
 def preset_points(name: str, bounds: Bounds = (0, 0, 1, 1), n: int = 16) -> np.ndarray:
@@ -131,7 +140,8 @@ class PointPicker(KitWidget):
 
     ``draw(ax, points)`` draws the picture (default: ``draw_delaunay``);
     ``presets`` adds or overrides presets (name -> points, or f(bounds, n));
-    ``on_change(picker)`` runs after every change.
+    ``on_change(picker)`` runs after every change; ``title`` is a string or
+    ``title(points, triangles)``, redrawn with the picture (so it never goes stale).
     """
 
     HIT_PIXELS = 9.0
@@ -140,7 +150,8 @@ class PointPicker(KitWidget):
     def __init__(self, points=(), *, draw: Callable[[Any, np.ndarray], None] | None = None,
                  presets: Mapping[str, Any] | None = None, bounds: Bounds = (0, 0, 1, 1),
                  on_change: Callable[["PointPicker"], None] | None = None, n: int = 16,
-                 size: tuple[int, int] = (440, 400), title: str = "") -> None:
+                 size: tuple[int, int] = (440, 400),
+                 title: str | Callable[[np.ndarray, np.ndarray], str] = "") -> None:
         self._points = as_points(points).reshape(-1, 2) if len(points) else np.zeros((0, 2))
         self._draw = draw or draw_delaunay
         self.presets: dict[str, Any] = dict(PRESETS)
@@ -156,8 +167,9 @@ class PointPicker(KitWidget):
         self.canvas = Canvas(*size)
         self.image = png_image(size[0])
         self.image.add_class("kit-picker-image")
-        self.preset = widgets.Dropdown(options=["(choose a preset)"] + list(self.presets),
-                                       description="preset", layout=widgets.Layout(width="16em"))
+        self.preset = widgets.Dropdown(options=["(choose one)"] + list(self.presets),
+                                       description="preset", layout=widgets.Layout(width="17em"),
+                                       style={"description_width": "4em"})
         self.undo_button = button("undo", "undo", "7em")
         self.clear_button = button("clear", "trash", "7em")
         self.status = widgets.HTML()
@@ -292,7 +304,7 @@ class PointPicker(KitWidget):
 
     # -- drawing
     def _render(self) -> bytes:
-        ax = self.canvas.clear(bounds=self.bounds, title=self.title)
+        ax = self.canvas.clear(bounds=self.bounds, title=self.title_text())
         self._draw(ax, self._points)
         ax.set_xlim(self.bounds[0], self.bounds[2])
         ax.set_ylim(self.bounds[1], self.bounds[3])
@@ -303,14 +315,19 @@ class PointPicker(KitWidget):
         self.image.value = self._render()
         distinct = len(np.unique(self._points, axis=0)) if len(self._points) else 0
         self.status.value = (f'<span class="kit-status">{len(self._points)} points '
-                             f'({distinct} distinct), {len(self.triangles)} Delaunay triangles</span>')
+                             f'({distinct} distinct), {_count(len(self.triangles), "Delaunay triangle")}</span>')
         if notify and self.on_change is not None:
             self.on_change(self)
+
+    def title_text(self) -> str:
+        """The title drawn now: ``title``, or ``title(points, triangles)`` when it is a function."""
+        return self.title(self._points, self.triangles) if callable(self.title) else self.title
 
     def static_png(self) -> bytes:
         return bytes(self.image.value)
 
     def static_text(self) -> str:
-        return (f"PointPicker{': ' + self.title if self.title else ''} ({len(self._points)} points, "
-                f"{len(self.triangles)} Delaunay triangles; click to add, drag to move, click a point to remove)")
+        title = self.title_text()
+        return (f"PointPicker{': ' + title if title else ''} ({len(self._points)} points, "
+                f"{_count(len(self.triangles), 'Delaunay triangle')}; click to add, drag to move, click a point to remove)")
 

@@ -195,22 +195,56 @@ def scrambled_triangulation(points, flips: int | None = None, seed: int = 0) -> 
     P = as_points(points)
     T = [tuple(int(v) for v in t) for t in Delaunay(P).simplices]
     rng = np.random.default_rng(seed)
+    apex: dict[tuple[int, int], tuple[int, int]] = {}   # directed edge a->b: (its triangle, the third vertex)
+
+    def attach(k: int) -> None:
+        t = T[k]
+        for j in range(3):
+            apex[(t[j], t[(j + 1) % 3])] = (k, t[(j + 2) % 3])
+
+    def detach(k: int) -> None:
+        t = T[k]
+        for j in range(3):
+            del apex[(t[j], t[(j + 1) % 3])]
+
+    def flippable(a: int, b: int) -> bool:
+        if (a, b) not in apex or (b, a) not in apex:
+            return False
+        c, d = apex[(a, b)][1], apex[(b, a)][1]
+        return orient2d(P[c], P[d], P[a]) * orient2d(P[c], P[d], P[b]) < 0  # strictly convex
+
+    for k in range(len(T)):
+        attach(k)
+    # the flippable edges (a < b), kept up to date after each flip: only the quadrilateral's change
+    candidates = [e for e in sorted(apex) if e[0] < e[1] and flippable(*e)]
+    where = {e: i for i, e in enumerate(candidates)}
+
+    def refresh(u: int, v: int) -> None:
+        e = (min(u, v), max(u, v))
+        if flippable(*e):
+            if e not in where:
+                where[e] = len(candidates)
+                candidates.append(e)
+        elif e in where:
+            i = where.pop(e)
+            last = candidates.pop()
+            if i < len(candidates):
+                candidates[i] = last
+                where[last] = i
+
     for _ in range(len(P) if flips is None else flips):
-        apex = {}
-        for k, t in enumerate(T):
-            for j in range(3):
-                apex[(t[j], t[(j + 1) % 3])] = (k, t[(j + 2) % 3])
-        candidates = []
-        for (a, b), (k, c) in apex.items():
-            if a < b and (b, a) in apex:
-                k2, d = apex[(b, a)]
-                if orient2d(P[c], P[d], P[a]) * orient2d(P[c], P[d], P[b]) < 0:  # strictly convex
-                    candidates.append((a, b, k, c, k2, d))
         if not candidates:
             break
-        a, b, k, c, k2, d = candidates[int(rng.integers(len(candidates)))]
+        a, b = candidates[int(rng.integers(len(candidates)))]
+        (k, c), (k2, d) = apex[(a, b)], apex[(b, a)]
         # triangles (a, b, c) and (b, a, d) become (c, a, d) and (d, b, c)
+        detach(k)
+        detach(k2)
         T[k], T[k2] = (c, a, d), (d, b, c)
+        attach(k)
+        attach(k2)
+        for u, v in ((a, b), (c, d), (a, c), (c, b), (b, d), (d, a)):
+            refresh(u, v)
     return np.array(T, dtype=np.int64).reshape(-1, 3)
 
 
@@ -276,7 +310,7 @@ class StepPlayer(KitWidget):
 
     >>> p = StepPlayer(["a", "b", "c"], lambda ax, s, i: ax.text(0.5, 0.5, s),
     ...                phases=lambda s: s, pseudocode=[("a", "first"), ("b", "second")])
-    >>> p.slider.value = 1; p.index, p.current_line
+    >>> p.slider.value = 2; p.index, p.current_line      # the slider counts from 1, as the caption does
     (1, 'b')
     >>> p.prev.click(); p.prev.click(); p.index      # stops at the first step
     0
@@ -297,17 +331,18 @@ class StepPlayer(KitWidget):
         self._describe = describe or str
         self.canvas = Canvas(*size)
         self._bounds = bounds
-        last = len(self.steps) - 1
-        self.play = widgets.Play(value=0, min=0, max=last, step=1, interval=interval,
+        # the slider counts steps from 1, as the caption does ("step 6/10" beside 6); ``index`` is 0-based
+        last = len(self.steps)
+        self.play = widgets.Play(value=1, min=1, max=last, step=1, interval=interval,
                                  description="play")
-        self.slider = widgets.IntSlider(value=0, min=0, max=last, description="step",
+        self.slider = widgets.IntSlider(value=1, min=1, max=last, description="step",
                                         continuous_update=True)
         widgets.jslink((self.play, "value"), (self.slider, "value"))
         self.prev = button("previous", "step-backward")
         self.next = button("next", "step-forward")
         self.image = png_image(size[0])
         self.caption = widgets.HTML()
-        self.code = widgets.HTML()
+        self.code = widgets.HTML(layout=widgets.Layout(flex="1 1 auto", min_width="14em"))
         controls = widgets.HBox([self.play, self.prev, self.next, self.slider])
         super().__init__([widgets.HTML(f"<b>{html.escape(title)}</b>") if title else widgets.HTML(),
                           controls, widgets.HBox([self.image, self.code]), self.caption])
@@ -320,8 +355,8 @@ class StepPlayer(KitWidget):
     # -- state
     @property
     def index(self) -> int:
-        """The step shown (0-based); setting it moves the slider."""
-        return int(self.slider.value)
+        """The step shown (0-based; the slider shows it 1-based); setting it moves the slider."""
+        return int(self.slider.value) - 1
 
     @index.setter
     def index(self, value: int) -> None:
@@ -337,7 +372,7 @@ class StepPlayer(KitWidget):
         return None if self._phases is None else self._phases(self.step)
 
     def _go(self, value: int) -> None:
-        self.slider.value = max(0, min(len(self.steps) - 1, int(value)))
+        self.slider.value = max(0, min(len(self.steps) - 1, int(value))) + 1
 
     # -- drawing
     def _draw_step(self, ax, k: int) -> None:
@@ -360,8 +395,11 @@ class StepPlayer(KitWidget):
         for key, text in self.pseudocode:
             style = ("background:#ffe08a;font-weight:bold;" if key == here else "color:#555;")
             rows.append(f'<div class="kit-line" data-key="{html.escape(key)}" '
-                        f'style="{style}white-space:pre;padding:1px 4px">{html.escape(text)}</div>')
-        return '<div style="font-family:monospace;font-size:12px;margin-left:8px">' + "".join(rows) + "</div>"
+                        f'style="{style}white-space:pre-wrap;padding:1px 4px 1px 2em;text-indent:-1.6em">'
+                        f'{html.escape(text)}</div>')
+        # long lines wrap (indented under their start) instead of being clipped by the output area
+        return ('<div style="font-family:monospace;font-size:12px;margin-left:8px;max-width:34em;'
+                'overflow-wrap:anywhere">' + "".join(rows) + "</div>")
 
     # -- static fallback: a filmstrip of (at most 8) steps
     def static_png(self) -> bytes:

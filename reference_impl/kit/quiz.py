@@ -209,9 +209,19 @@ class PredictRevealMany(_Quiz):
 
 
 # ----------------------------------------------------------------------------- ready-made questions
-def _name(t) -> str:
+def _name(t, P: np.ndarray | None = None, startup: bool = False) -> str:
+    """A choice's label.  A ghost triangle (a, b, inf) is named as the dry run names it, with the
+    region it covers: the outside of hull edge a-b, or, while only two points exist (both ghosts
+    share the line through them), the side of that line, which the figure draws."""
     if INFINITE in t:
-        return f"outside hull edge {t[0]}-{t[1]}"
+        a, b = t[0], t[1]
+        if startup and P is not None:
+            dx, dy = P[b] - P[a]
+            nx, ny = -dy, dx                   # the ghost (a, b, inf) covers the left of a->b
+            side = (("above" if ny > 0 else "below") if abs(ny) >= abs(nx)
+                    else ("left of" if nx < 0 else "right of"))
+            return f"ghost ({a}, {b}, inf): the half-plane {side} the line through {a} and {b}"
+        return f"ghost ({a}, {b}, inf): outside hull edge {min(a, b)}-{max(a, b)}"
     return "triangle (" + ", ".join(map(str, t)) + ")"
 
 
@@ -240,11 +250,21 @@ def bad_triangles_quiz(points, k: int, *, order: str = "input") -> PredictReveal
     else:   # only the two start-up ghosts of the first two points exist
         i, j = steps[0].index, steps[1].index
         ghosts = [(i, j, INFINITE), (j, i, INFINITE)]
-    choices = [(_name(t), t) for t in tris + ghosts]
+    startup = not tris
+    choices = [(_name(t, P, startup), t) for t in tris + ghosts]
     bounds = fit_bounds(P)
 
     def figure(ax) -> None:
         draw_triangles(ax, P, before.triangles)
+        if startup:   # the line through the first two points: the ghosts are the half-planes on its sides
+            i, j = steps[0].index, steps[1].index
+            (x0, y0), (x1, y1) = P[i], P[j]
+            span = 4 * max(bounds[2] - bounds[0], bounds[3] - bounds[1])
+            d = np.array([x1 - x0, y1 - y0]) / np.hypot(x1 - x0, y1 - y0)
+            ax.plot([x0 - span * d[0], x0 + span * d[0]], [y0 - span * d[1], y0 + span * d[1]],
+                    linestyle="--", color=COLORS["circle"], linewidth=1)
+            ax.set_xlim(bounds[0], bounds[2])
+            ax.set_ylim(bounds[1], bounds[3])
         shown = [st.index for st in steps[:k]]
         draw_points(ax, P[shown], labels=[str(i) for i in shown])
         draw_points(ax, P[[s.index]], color=COLORS["new_point"], size=60, labels=[f"new {s.index}"])

@@ -99,8 +99,8 @@ from reference_impl.mesh.ordering import insertion_order as brio_order
 from reference_impl.validate import as_points
 from reference_impl.exact.predicates import incircle, orient2d
 
-__all__ = ["bowyer_watson", "Step", "dry_run", "cavity_boundary", "insertion_order",
-           "INFINITE", "TUTORIAL_POINTS"]
+__all__ = ["bowyer_watson", "recursive_bowyer_watson", "Step", "dry_run", "cavity_boundary",
+           "insertion_order", "INFINITE", "TUTORIAL_POINTS"]
 
 INFINITE = -1
 """Index of the vertex at infinity; ghost triangles are stored as (u, v, INFINITE)."""
@@ -427,7 +427,7 @@ class _Triangulation:
 
 # ----------------------------------------------------------------------------- the algorithm
 def bowyer_watson(points, *, trace: list | None = None, locate: str = "scan",
-                  order: str = "canonical") -> np.ndarray:
+                  order: str = "canonical", snapshots: bool = True) -> np.ndarray:
     """Delaunay triangulation by Bowyer-Watson: (m, 3) int64 counter-clockwise triangles.
 
     ``points`` is anything ``as_points`` accepts ((n, 2) numbers).  Triangles
@@ -438,6 +438,9 @@ def bowyer_watson(points, *, trace: list | None = None, locate: str = "scan",
 
     ``trace``: a list; one ``Step`` per inserted point is appended to it
     (nothing when there is no triangle to build).
+    ``snapshots``: with ``False``, each traced ``Step.triangles`` is left empty
+    instead of holding a copy of the whole triangulation (the copy makes a traced
+    run quadratic; counts of bad and new triangles need no copy).
     ``locate``: ``"scan"`` (default: test every triangle, as the tutorial does;
     quadratic time) or ``"walk"`` (walk to the point, then grow the cavity
     through neighbours: same result, much faster).
@@ -472,7 +475,43 @@ def bowyer_watson(points, *, trace: list | None = None, locate: str = "scan",
         else:
             step = mesh.insert(i, locate)
         if trace is not None:
-            trace.append(replace(step, triangles=mesh.real_triangles()))
+            trace.append(replace(step, triangles=mesh.real_triangles()) if snapshots else step)
+    return mesh.real_triangles()
+
+
+def recursive_bowyer_watson(points, *, locate: str = "walk", order: str = "canonical") -> np.ndarray:
+    """The tutorial's recursive version (its section 12.1), with its mistakes fixed: same result.
+
+    The tutorial's ``recursive_bowyer_watson(triangulation, points)`` pops the
+    first point, inserts it and calls itself on the rest: one Python frame per
+    inserted point, so the call stack is as deep as the input is long and a
+    few hundred frames short of ``sys.getrecursionlimit()`` (1000 by default)
+    is as far as it goes.  The insertion itself is ``bowyer_watson``'s.
+
+    >>> recursive_bowyer_watson(TUTORIAL_POINTS).tolist() == bowyer_watson(TUTORIAL_POINTS).tolist()
+    True
+    >>> import sys
+    >>> recursive_bowyer_watson(np.random.default_rng(0).random((sys.getrecursionlimit() + 10, 2)))
+    Traceback (most recent call last):
+    ...
+    RecursionError: maximum recursion depth exceeded...
+    """
+    pts = as_points(points)
+    if locate not in ("walk", "scan"):
+        raise ValueError(f"locate must be 'walk' or 'scan', got {locate!r}")
+    xy: list[Point] = [(x, y) for x, y in pts.tolist()]
+    sequence = insertion_order(pts, order)
+    mesh = _Triangulation(xy)
+
+    def insert_rest(rest: list[int]) -> None:   # the tutorial's shape: pop one point, recurse on the rest
+        if not rest:
+            return
+        mesh.insert(rest.pop(0), locate)
+        insert_rest(rest)
+
+    if len(sequence) >= 2:
+        mesh.start(sequence[0], sequence[1])
+        insert_rest(list(sequence[2:]))
     return mesh.real_triangles()
 
 

@@ -5,18 +5,20 @@ Run the examples:  python -m pytest reference_impl/teaching/tutorial_bugs.py
 
 Do not use this code to triangulate anything; use ``bowyer_watson`` (the
 teaching version) or ``Delaunay`` (the fast one).  ``naive_bowyer_watson``
-does what the tutorial's code does, written anew, mistakes included:
+does what the tutorial's code does, written anew, mistakes included.  The
+mistakes are numbered as in lesson 04 and lesson 12 (and SPEC section 9):
 
 1. triangles are never oriented, yet the in-circle determinant is read as
    "inside" when positive, which is only true for counter-clockwise triangles;
-2. the in-circle test is ``np.linalg.det(...) > 0`` in floating point: ties and
-   near-ties (cocircular points, grids) get a sign from rounding noise;
-3. the cavity boundary keeps *one* copy of an edge shared by two bad
+2. the cavity boundary keeps *one* copy of an edge shared by two bad
    triangles (it should drop both), so the new triangles overlap;
-4. the super-triangle is fixed at +-1e5: a point outside it (the tutorial's
+3. the super-triangle is fixed at +-1e5: (a) a point outside it (the tutorial's
    own test at 1e6) can lie in no circumcircle at all and is silently skipped;
-5. at the end, every triangle touching the super-triangle is dropped, which
-   also drops real hull triangles whose circumcircle contains a super vertex.
+   (b) at the end, every triangle touching the super-triangle is dropped, which
+   also drops real hull triangles whose circumcircle contains a super vertex;
+4. the in-circle test is ``np.linalg.det(...) > 0`` in floating point: ties and
+   near-ties (cocircular points, grids) get a sign from rounding noise (and its
+   remedy, an area epsilon, depends on the scale).
 
 Each failure is shown below on a concrete input (``EXHIBITS``) and confirmed by
 the exact checker ``verify.check_delaunay``; the course's tests repeat these
@@ -26,15 +28,15 @@ checks and show that ``bowyer_watson`` gets every one of them right.
 >>> def check(name, **kw):
 ...     pts = EXHIBITS[name]
 ...     return check_delaunay(pts, naive_bowyer_watson(pts, **kw))
->>> check("overlap")            # three points, the edge shared by two bad triangles is kept
+>>> check("overlap")            # mistake 2: three points, the edge shared by two bad triangles is kept
 (False, 'the directed edge 0->1 is used by 2 triangles: triangles overlap')
->>> check("clockwise")
+>>> check("clockwise")          # mistake 1 (with 2)
 (False, 'triangle 1 = (1, 2, 3) is clockwise; triangles must be counter-clockwise')
 >>> check("zero-area")
 (False, 'triangle 3 = (2, 1, 3) is degenerate (zero area); triangles must be counter-clockwise')
->>> naive_bowyer_watson(EXHIBITS["large"]).tolist()   # the tutorial's 1e6 test: no triangle at all
+>>> naive_bowyer_watson(EXHIBITS["large"]).tolist()   # mistake 3a, the tutorial's 1e6 test: no triangle
 []
->>> naive_bowyer_watson(EXHIBITS["hull-lost"]).tolist()   # (0, 1, 2) is missing: a dent in the hull
+>>> naive_bowyer_watson(EXHIBITS["hull-lost"]).tolist()   # mistake 3b: (0, 1, 2) is missing, a dent
 [[0, 1, 3], [1, 2, 3]]
 >>> print(check("hull-lost")[1])
 edge 0-1 has a triangle on one side only but is not a convex hull edge (a hole, a gap or an overlap)
@@ -54,7 +56,7 @@ edge can have the new point on its right, which makes a clockwise triangle,
 whose in-circle sign is then backwards for every later point.  With a correct
 boundary, every new triangle is counter-clockwise by construction (the course's
 version still checks it with ``orient2d``).
-Rounding noise in the determinant is the remaining mistake: on the 12 integer
+Rounding noise in the determinant is the remaining mistake (4): on the 12 integer
 points of x^2 + y^2 = 25 every in-circle test is an exact tie, which ``np.linalg.det``
 decides by noise.  Which insertion orders break depends on the machine's BLAS, so
 ten shuffles are tried; the exact predicate gets all of them right:
@@ -67,7 +69,7 @@ True
 True
 
 With all three fixes, what is left is the finite super-triangle, and it still
-fails (mistakes 4 and 5): only the vertex at infinity of ``bowyer_watson``
+fails (mistake 3, both halves): only the vertex at infinity of ``bowyer_watson``
 cures those.
 
 >>> naive_bowyer_watson(EXHIBITS["large"], fix=ALL_FIXES).tolist()
@@ -158,7 +160,7 @@ def det_in_circumcircle(triangle: Sequence[Point], p: Point) -> bool:
     >>> det_in_circumcircle([(0, 0), (0, 2), (2, 0)], (1, 1))     # same triangle, clockwise
     False
 
-    Mistake 2: an exact tie (four points on one circle) is decided by rounding
+    Mistake 4: an exact tie (four points on one circle) is decided by rounding
     noise (see ``tutorial_det``), where the exact ``incircle`` says 0.
     """
     return tutorial_det(triangle, p) > 0
@@ -167,7 +169,7 @@ def det_in_circumcircle(triangle: Sequence[Point], p: Point) -> bool:
 def tutorial_boundary(bad: Iterable[Sequence]) -> list[tuple]:
     """The tutorial's cavity boundary: an edge is added unless its reverse is already there.
 
-    Mistake 3: two bad triangles sharing an edge list it as a->b and b->a; the
+    Mistake 2: two bad triangles sharing an edge list it as a->b and b->a; the
     first copy is kept, so an edge *inside* the cavity survives and the new
     triangles built on it overlap.  The correct boundary drops both copies
     (``bowyer_watson.cavity_boundary``):
@@ -190,16 +192,18 @@ def _exact_boundary(bad: list[CoordTriangle]) -> list[tuple[Point, Point]]:
     return [e for e in edges if (e[1], e[0]) not in present]
 
 
-def naive_bowyer_watson(points, *, fix: Iterable[str] = ()) -> np.ndarray:
+def naive_bowyer_watson(points, *, fix: Iterable[str] = (), log: list | None = None) -> np.ndarray:
     """The tutorial's algorithm (with its mistakes) as (m, 3) indices into ``points``.
 
     Triangles are returned in the vertex order the algorithm built them (it
     never orients them); a vertex is the first input index with its coordinates.
     ``fix``: any of ``"orientation"``, ``"predicate"``, ``"boundary"`` (see the
-    module docstring).
+    module docstring).  ``log``: a list; one line per inserted point is appended
+    (its bad triangles, the boundary kept, the triangles made; super-triangle
+    corners are S0, S1, S2), to compare with a correct run's step log.
 
     Three input points that form a perfectly ordinary triangle are enough for
-    the overlap (mistake 3): the second point's cavity has two triangles, and
+    the overlap (mistake 2): the second point's cavity has two triangles, and
     the edge between them is kept.
 
     >>> from reference_impl.exact.verify import check_delaunay
@@ -210,6 +214,8 @@ def naive_bowyer_watson(points, *, fix: Iterable[str] = ()) -> np.ndarray:
     'the directed edge 0->1 is used by 2 triangles: triangles overlap'
     >>> check_delaunay(pts, naive_bowyer_watson(pts, fix=["boundary"]))
     (True, 'ok')
+    >>> steps = []; _ = naive_bowyer_watson(pts, log=steps); print(steps[1])
+    point 1: 2 bad (S1, S2, 0), (S2, S0, 0); boundary of 5 edges S1->S2, S2->0, 0->S1, S2->S0, S0->0; 5 new
     """
     fixes = set(fix)
     unknown = fixes - set(ALL_FIXES)
@@ -227,26 +233,33 @@ def naive_bowyer_watson(points, *, fix: Iterable[str] = ()) -> np.ndarray:
             return (b, a, c)
         return (a, b, c)
 
+    first_index: dict[Point, int] = {}
+    for i, p in enumerate(coords):
+        first_index.setdefault(p, i)
+
+    def name(v: Point) -> str:
+        return f"S{SUPER_TRIANGLE.index(v)}" if v in SUPER_TRIANGLE else str(first_index[v])
+
     triangulation: list[CoordTriangle] = [SUPER_TRIANGLE]
-    for p in coords:
+    for i, p in enumerate(coords):
         bad = [t for t in triangulation if contains(t, p)]
         boundary = _exact_boundary(bad) if "boundary" in fixes else tutorial_boundary(bad)
+        if log is not None:
+            log.append(f"point {i}: {len(bad)} bad " + ", ".join("(" + ", ".join(map(name, t)) + ")" for t in bad)
+                       + f"; boundary of {len(boundary)} edges "
+                       + ", ".join(f"{name(a)}->{name(b)}" for a, b in boundary) + f"; {len(boundary)} new")
         for t in bad:
             triangulation.remove(t)
         for a, b in boundary:
             triangulation.append(make(a, b, p))
     kept = [t for t in triangulation if not any(v in SUPER_TRIANGLE for v in t)]
-
-    first_index: dict[Point, int] = {}
-    for i, p in enumerate(coords):
-        first_index.setdefault(p, i)
     return np.array([[first_index[v] for v in t] for t in kept], dtype=np.int64).reshape(-1, 3)
 
 
 def epsilon_says_degenerate(a: Point, b: Point, c: Point, eps: float = 1e-9) -> bool:
     """The tutorial's remedy for "near-zero area" triangles: area below ``eps`` means degenerate.
 
-    Thresholds depend on the scale.  The tutorial's own example is a valid
+    Mistake 4 again: thresholds depend on the scale.  The tutorial's own example is a valid
     triangle (exactly counter-clockwise or clockwise, never collinear), yet a
     1e-9 area threshold throws it away; the same shape scaled by 1e6 passes:
 

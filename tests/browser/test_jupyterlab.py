@@ -14,7 +14,10 @@ page shows and what the kernel holds:
   was rebuilt on them;
 * answers a predict-then-reveal question: the feedback appears and is right.
 
-Lesson 01 is opened and run too.  Each test opens its notebook in a workspace of its own,
+Lesson 01 is opened and run too, and a copy of it is run, saved and reopened in a new tab without
+running anything: every widget must show its last picture, not "Error displaying widget: model
+not found" (JupyterLab never renders the PNG beside a widget view; the picture comes from the
+widget state that ``make setup``'s overrides.json makes JupyterLab save).  Each test opens its notebook in a workspace of its own,
 reset on load, and finds the notebook's widget by its path (a shared workspace restored the
 previous test's tab, whose kernel was gone, and the run waited on it for ever).  A cell that
 raises fails the test at once, naming the cell; a wait that times out saves
@@ -43,6 +46,7 @@ CHROMIUM = shutil.which("chromium") or "/usr/bin/chromium"
 SHOTS = ROOT / "build" / "screenshots"
 LESSON_01 = "01-prerequisites.ipynb"
 LESSON_03 = "03-bowyer-watson-step-by-step.ipynb"
+SAVED = "saved-01-prerequisites.ipynb"
 PROBES = {"hangs.ipynb": ["x = 1", "import time; time.sleep(120)", "y = 2"],
           "raises.ipynb": ["x = 1", "raise ValueError('boom at ' + str(x))", "y = 2"]}
 
@@ -64,6 +68,7 @@ def lab(tmp_path_factory):
     root = tmp_path_factory.mktemp("lab")
     for name in (LESSON_01, LESSON_03):
         shutil.copy(ROOT / "notebooks" / name, root / name)
+    shutil.copy(ROOT / "notebooks" / LESSON_01, root / SAVED)   # the copy that the save test saves
     for name, cells in PROBES.items():   # notebooks that hang or raise: the waits' own failures
         nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(c) for c in cells], metadata={
             "kernelspec": {"name": "python3", "display_name": "Python 3", "language": "python"}})
@@ -383,3 +388,47 @@ def test_a_run_that_hangs_or_raises_says_which_cell(lab, page):
     message = str(raised.value)
     assert "raises.ipynb: a cell raised" in message, message
     assert "ValueError: boom at 1" in message and "cell 1 (" in message, message
+
+
+PICTURES = """() => { const nb = window.__courseNb.content.node;
+    return {images: nb.querySelectorAll('.jp-OutputArea-output img').length,
+            missing: (nb.innerText.match(/model not found/g) || []).length}; }"""
+
+
+def test_a_saved_lesson_reopened_without_running_shows_its_pictures(lab, page, browser):
+    overrides = Path(sys.prefix) / "share" / "jupyter" / "lab" / "settings" / "overrides.json"
+    assert json.loads(overrides.read_text())["@jupyter-widgets/jupyterlab-manager:plugin"]["saveState"], \
+        "make setup writes the venv's JupyterLab overrides.json (saveState: true)"
+    open_and_run(page, lab, SAVED)
+    shown = page.evaluate(PICTURES)
+    assert shown["images"] >= 3 and shown["missing"] == 0
+    page.evaluate("() => window.jupyterapp.commands.execute('docmanager:save')")
+    deadline = time.monotonic() + 30
+    while True:
+        with urllib.request.urlopen(f"{lab}/api/contents/{SAVED}?content=1", timeout=10) as r:
+            saved = json.load(r)["content"]
+        if "widgets" in saved["metadata"] or time.monotonic() > deadline:
+            break
+        time.sleep(0.5)
+    assert "widgets" in saved["metadata"], "saving did not store the widget state"
+    shut_down_session(page, lab)     # a live session would hand the reopened tab the kernel's widgets
+    page.evaluate("() => { window.__courseNb = null; }")    # the fixture has nothing left to shut down
+
+    again = browser.new_page(viewport={"width": 1400, "height": 1000})
+    try:
+        again.goto(f"{lab}/lab/workspaces/reopen-{os.getpid()}-{time.monotonic_ns()}/tree/{SAVED}?reset")
+        wait_until(again, SAVED, FIND_NOTEBOOK, "the reopened notebook's tab", 120, SAVED)
+        deadline = time.monotonic() + 60
+        while True:
+            now = again.evaluate(PICTURES)
+            if now["images"] >= shown["images"] or time.monotonic() > deadline:
+                break
+            time.sleep(0.5)
+        again.screenshot(path=str(SHOTS / "lesson01-reopened.png"))
+        assert now == {"images": shown["images"], "missing": 0}, \
+            f"reopened without running: {now}, after Run All: {shown}"
+    finally:
+        try:
+            shut_down_session(again, lab)
+        finally:
+            again.close()

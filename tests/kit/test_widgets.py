@@ -85,7 +85,8 @@ def test_bowyer_watson_player_steps_through_the_trace_and_highlights_each_phase(
     assert canon(last.step.triangles) == canon(bowyer_watson(TUTORIAL)) == scipy_canon(TUTORIAL)
     p.prev.click()
     assert p.index == len(p.steps) - 2
-    p.slider.value = 3
+    p.slider.value = 4                                      # the slider counts from 1: step 4 is index 3
+    assert p.index == 3 and f"step 4/{len(p.steps)}" in p.caption.value
     assert p.current_line == "bad" and "bad triangles" in p.caption.value
 
 
@@ -137,7 +138,7 @@ def test_lawson_player_flips_to_the_delaunay_triangulation_one_legal_flip_at_a_t
             far = next(v for v in pair[1] if v not in (i, j))
             assert exact_incircle(*[X[v] for v in pair[0]], X[far]) > 0
     assert canon(p.steps[-1].triangles) == scipy_canon(pts)
-    p.slider.value = 1
+    p.slider.value = 2
     assert p.current_line == "test"
     assert png_size(png_of(p._repr_mimebundle_()))[0] > 0
 
@@ -323,3 +324,50 @@ def test_plain_import_of_the_library_does_not_load_the_kit():
     code = "import sys, reference_impl; print('reference_impl.kit' in sys.modules, 'ipywidgets' in sys.modules)"
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.split() == ["False", "False"]
+
+
+# ----------------------------------------------------------------------------- issue 25's small ones
+def test_picker_title_can_follow_the_points_and_counts_say_triangle_once():
+    title = lambda pts, tris: f"{len(tris)} now"                      # noqa: E731
+    p = PointPicker([(0.1, 0.1), (0.5, 0.5), (0.9, 0.9)], title=title)
+    assert p.title_text() == "0 now"
+    p.add_point(0.9, 0.1)
+    assert p.title_text() == f"{len(p.triangles)} now" and len(p.triangles) > 0
+    q = PointPicker([(0.2, 0.2), (0.8, 0.2), (0.5, 0.7)])
+    assert "1 Delaunay triangle<" in q.status.value and "1 Delaunay triangle;" in q.static_text()
+    assert all(len(o) <= 12 for o in q.preset.options)                # nothing cut off in the dropdown
+
+
+def test_circle_preset_is_exactly_cocircular():
+    from itertools import combinations
+
+    from reference_impl.kit.picker import preset_points
+
+    P = preset_points("circle", n=12)
+    assert all(exact_incircle(*exact(P[list(q)])) == 0 for q in combinations(range(12), 4))
+
+
+def test_ghost_choices_name_the_side_they_cover():
+    q = bad_triangles_quiz(TUTORIAL, 2)           # two points: both ghosts share the line 0-1
+    labels = [label for label, _ in q.choices]
+    assert labels == ["ghost (0, 1, inf): the half-plane above the line through 0 and 1",
+                      "ghost (1, 0, inf): the half-plane below the line through 1 and 0"]
+    assert q.answers == [(1, 0, -1)]              # (5, 1) lies below the line through (1, 1), (3, 2)
+    later = [label for label, _ in bad_triangles_quiz(TUTORIAL, 3).choices]
+    assert "ghost (0, 1, inf): outside hull edge 0-1" in later
+
+
+def test_scrambled_triangulation_stays_valid_and_differs_from_delaunay():
+    pts = np.random.default_rng(5).random((60, 2))
+    for seed in range(3):
+        T = scrambled_triangulation(pts, seed=seed)
+        assert len(validate_triangulation(pts, T)) == len(T)
+        assert canon(T) != scipy_canon(pts)
+
+
+def test_progress_line_is_silent_outside_a_kernel_and_measure_all_still_measures():
+    from reference_impl.kit.progress import progress
+
+    assert list(progress(range(3), "x")) == [0, 1, 2]
+    panel = MeasurePanel(lambda n: {"f": n * 1e-6}, [10, 20])
+    assert sorted(panel.measure_all()["f"]) == [10, 20]

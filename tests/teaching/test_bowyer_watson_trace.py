@@ -379,3 +379,35 @@ def test_bad_options_raise_value_error():
         bowyer_watson(pts, order="random")
     with pytest.raises(ValueError, match="unknown fix 'super'"):
         naive_bowyer_watson(pts, fix=["super"])
+
+
+def test_trace_without_snapshots_has_the_same_counts_and_no_copies():
+    pts = np.random.default_rng(4).random((80, 2))
+    full, light = [], []
+    bowyer_watson(pts, trace=full, locate="walk")
+    bowyer_watson(pts, trace=light, locate="walk", snapshots=False)
+    assert [(s.index, s.bad, s.boundary, s.new) for s in full] == [(s.index, s.bad, s.boundary, s.new) for s in light]
+    assert all(len(s.triangles) == 0 for s in light)
+
+
+def test_recursive_version_matches_until_the_recursion_limit():
+    import sys
+
+    from reference_impl.teaching.bowyer_watson import recursive_bowyer_watson
+
+    pts = np.random.default_rng(6).random((300, 2))
+    assert recursive_bowyer_watson(pts).tolist() == bowyer_watson(pts).tolist()
+    deep = np.random.default_rng(7).random((sys.getrecursionlimit() + 50, 2))
+    with pytest.raises(RecursionError):
+        recursive_bowyer_watson(deep)
+    assert len(bowyer_watson(deep, locate="walk")) > 0
+
+
+def test_tutorial_log_shows_the_kept_shared_edge():
+    from reference_impl.teaching.tutorial_bugs import ALL_FIXES, EXHIBITS, naive_bowyer_watson
+
+    broken, fixed = [], []
+    naive_bowyer_watson(EXHIBITS["overlap"], log=broken)
+    naive_bowyer_watson(EXHIBITS["overlap"], fix=ALL_FIXES, log=fixed)
+    assert broken[0] == fixed[0] and broken[1] != fixed[1]
+    assert "S2->0" in broken[1] and "S2->0" not in fixed[1]
