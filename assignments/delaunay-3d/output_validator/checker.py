@@ -22,6 +22,7 @@ LIBRARY = ("judge_io", "verify")  # bound as globals by the shared loader
 SMALL = 24                        # inputs up to this many points are quoted in messages
 
 PresentationError = judge_io.PresentationError  # noqa: F821 - bound by the loader
+show, mistake = judge_io.show, judge_io.mistake  # noqa: F821 - safe previews, two-part messages
 
 
 def read_input(text: str) -> list:

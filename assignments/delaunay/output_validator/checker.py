@@ -23,6 +23,7 @@ from __future__ import annotations
 LIBRARY = ("judge_io", "verify")  # reference_impl/<name>.py, bound as globals by the shared loader
 
 PresentationError = judge_io.PresentationError  # noqa: F821 - bound by the loader
+show, mistake = judge_io.show, judge_io.mistake  # noqa: F821 - safe previews, two-part messages
 
 
 class WrongAnswer(Exception):
@@ -68,8 +69,12 @@ def from_result(value, args: list) -> list[list[int]]:
 def read_output(text: str, args: list) -> list[list[int]]:
     """Parse program output: m, then m lines 'i j k'."""
     first = text.lstrip().split("\n", 1)[0].strip()
-    if first.isdigit():
-        _at_most(int(first), args)
+    try:
+        announced = judge_io.parse_int(first, "the first line")  # noqa: F821 - ASCII digits, bounded length
+    except PresentationError:
+        announced = None  # read_index_rows says what is wrong with it
+    if announced is not None:
+        _at_most(announced, args)
     return judge_io.read_index_rows(text, 3, "triangle", _limit(args))  # noqa: F821
 
 

@@ -19,6 +19,7 @@ import math
 LIBRARY = ("judge_io", "verify")  # bound as globals by the shared loader
 
 PresentationError = judge_io.PresentationError  # noqa: F821 - bound by the loader
+show, mistake = judge_io.show, judge_io.mistake  # noqa: F821 - safe previews, two-part messages
 EXPLAIN_MAX_N = 300  # below this, a wrong tree's message names an edge swap that shortens it
 
 

@@ -17,6 +17,7 @@ from __future__ import annotations
 LIBRARY = ("judge_io", "verify")  # bound as globals by the shared loader
 
 PresentationError = judge_io.PresentationError  # noqa: F821 - bound by the loader
+show, mistake = judge_io.show, judge_io.mistake  # noqa: F821 - safe previews, two-part messages
 
 
 def read_input(text: str) -> list:
