@@ -39,7 +39,7 @@ import json
 import sys
 from typing import Any, Sequence
 
-from . import checker_attacks, checker_runtime
+from . import checker_attacks, checker_runtime, hidden_feedback
 
 REQUIRED = {"read_input": 1, "write_input": 1, "from_result": 2, "read_output": 2, "write_output": 1, "check": 3}
 OPTIONAL = {"read_answer": 2, "draw": 4}
@@ -108,6 +108,9 @@ def _interface_errors(problem) -> list[str]:
     pe = getattr(chk, "PresentationError", None)
     if not (isinstance(pe, type) and issubclass(pe, Exception)):
         errors.append("checker lacks PresentationError (an Exception subclass)")
+    for kind in dict(getattr(chk, "MISTAKES", None) or {}).values():
+        if hidden_feedback.safe_kind(kind) != kind:
+            errors.append(f"MISTAKES kind {kind!r} would be dropped from hidden feedback: short text, no digits")
     return errors
 
 

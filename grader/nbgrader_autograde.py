@@ -8,8 +8,9 @@ extraction, same sandbox, same tests), and writes each scored group's result int
 cell: a short stdout line when every test passed (full points), an error output with the verdict
 and message when not (zero). nbgrader's gradebook, ``generate_feedback`` and ``export`` then work
 unchanged. No kernel is started, so nothing a student writes can rewrite cells, monkeypatch the
-tests or reach ``gradebook.db``. Feedback never holds hidden inputs: scored groups show the verdict,
-time and the checker's message with floating-point numbers masked, never the test input.
+tests or reach ``gradebook.db``. Feedback never holds hidden data: scored groups show the verdict,
+time and the kind of mistake (:mod:`grader.hidden_feedback`), never the checker's detail, the
+student's exception text or prints, or the test input.
 
 Results are kept per (student, problem, code) in ``judged.sqlite`` next to the gradebook, so the
 parallel path (:func:`grade_course`, ``python -m grader grade PROBLEM assignments/submitted
@@ -95,8 +96,13 @@ def judge_notebook_file(problem_id: str, path: Path, student: str, store_path: P
 
 
 def _line(t: TestResult, hidden: bool) -> str:
-    msg = (t.message.splitlines() or [""])[0][:300]
-    return f"{t.name:16} {str(t.verdict):3} {t.time_s:7.3f} s  {mask_numbers(msg) if hidden else msg}".rstrip()
+    """One test's feedback line. A hidden test shows only its ``hidden_message`` (the kind of mistake:
+    never the checker's detail, the student's exception text or prints; :mod:`grader.hidden_feedback`)."""
+    if hidden:
+        msg = "" if t.verdict in (Verdict.AC,) else mask_numbers(t.hidden_message or DESCRIPTIONS.get(str(t.verdict), ""))
+    else:
+        msg = (t.message.splitlines() or [""])[0][:300]
+    return f"{t.name:16} {str(t.verdict):3} {t.time_s:7.3f} s  {msg}".rstrip()
 
 
 def group_output(result: JudgeResult, group: str, points: int) -> dict:

@@ -18,7 +18,7 @@ Run the doctests: python -m pytest reference_impl/judge_io.py
 import math
 import re
 
-__all__ = ["PresentationError", "Mistake", "mistake", "show", "number", "parse_int", "parse_float", "read_points",
+__all__ = ["PresentationError", "Mistake", "mistake", "mistake_kinds", "show", "number", "parse_int", "parse_float", "read_points",
            "write_points", "as_index", "index_rows", "read_index_rows", "write_index_rows", "draw_edges"]
 
 #: the longest integer token a reader parses (an index or a count never needs more)
@@ -61,6 +61,29 @@ def mistake(kind: str, detail: str) -> Mistake:
     m = Mistake(detail)
     m.kind = kind
     return m
+
+
+def mistake_kinds(table: dict, default: str):
+    """Decorator for a checker's ``check``: a failure message that is not already a
+    :class:`Mistake` gets the kind of the first ``table`` key (a substring) it contains, else
+    ``default``. Kinds hold no number of the test (the grader drops any kind with a digit).
+
+    >>> @mistake_kinds({"outside": "an index is out of range"}, "the answer is wrong")
+    ... def check(args, answer, expected):
+    ...     return False, "index 7 is outside 0..3"
+    >>> check(None, None, None)[1].kind
+    'an index is out of range'
+    """
+    def wrap(check):
+        def checked(args, answer, expected):
+            ok, message = check(args, answer, expected)
+            if ok or isinstance(message, Mistake):
+                return ok, message
+            kind = next((k for key, k in table.items() if key in message), default)
+            return ok, mistake(kind, message)
+        checked.__name__, checked.__doc__, checked.__wrapped__ = check.__name__, check.__doc__, check
+        return checked
+    return wrap
 
 
 def show(value, limit: int = 60) -> str:

@@ -47,6 +47,15 @@ def write_output(pair: list) -> str:
     return f"{pair[0]} {pair[1]}\n"
 
 
+#: failure message (a substring) -> the kind of mistake a hidden test's feedback shows (no numbers)
+MISTAKES = {
+    "outside 0..": "an index is out of range",
+    "twice": "the two indices are the same point",
+    "floating point": "not a closest pair (compare squared distances exactly)",
+}
+
+
+@judge_io.mistake_kinds(MISTAKES, "not a closest pair")  # noqa: F821 - bound by the loader
 def check(args: list, pair: list[int], expected: list[int] | None) -> tuple[bool, str]:
     """Exact check; ``expected`` is a closest pair (the reference answer)."""
     (points,) = args

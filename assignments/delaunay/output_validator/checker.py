@@ -78,6 +78,20 @@ def read_output(text: str, args: list) -> list[list[int]]:
     return judge_io.read_index_rows(text, 3, "triangle", _limit(args))  # noqa: F821
 
 
+#: failure message (a substring) -> the kind of mistake a hidden test's feedback shows (no numbers)
+MISTAKES = {
+    "outside 0..": "a triangle uses an index out of range",
+    "counter-clockwise": "a triangle is not counter-clockwise",
+    "collinear": "triangles given for collinear points",
+    "overlap": "triangles overlap",
+    "convex hull": "the triangles do not cover the convex hull exactly",
+    "not a vertex": "a point is not a vertex of any triangle",
+    "not Delaunay": "an edge is not Delaunay",
+    "circumcircle": "a point lies inside a circumcircle",
+}
+
+
+@judge_io.mistake_kinds(MISTAKES, "not a valid Delaunay triangulation")  # noqa: F821 - bound by the loader
 def check(args: list, triangles: list[list[int]], expected: list[list[int]] | None) -> tuple[bool, str]:
     """Exact check; ``expected`` (the reference answer) only improves the message."""
     (points,) = args

@@ -105,6 +105,13 @@ def write_output(answers: list) -> str:
     return "".join((" ".join(map(str, [len(a)] + a)) if isinstance(a, list) else str(a)) + "\n" for a in answers)
 
 
+#: failure message (a substring) -> the kind of mistake a hidden test's feedback shows (no numbers)
+MISTAKES = {
+    "sorted increasing": "a neighbour list is not sorted or has repeats",
+}
+
+
+@judge_io.mistake_kinds(MISTAKES, "an answer differs from the correct one")  # noqa: F821 - bound by the loader
 def check(args: list, answers: list, expected: list | None) -> tuple[bool, str]:
     """Exact comparison with the reference answers; the message names the first wrong one."""
     (ops,) = args

@@ -109,6 +109,16 @@ def convex_hull(points: list) -> list[int]:
     return lower[:-1] + upper[:-1]
 
 
+#: failure message (a substring) -> the kind of mistake a hidden test's feedback shows (no numbers)
+MISTAKES = {
+    "strictly inside the circle": "a point lies strictly inside the circle",
+    "outside the convex hull": "the centre is outside the convex hull",
+    "not the largest": "the radius is too small",
+    "larger than the optimum": "the radius is too large",
+}
+
+
+@judge_io.mistake_kinds(MISTAKES, "the circle is wrong")  # noqa: F821 - bound by the loader
 def check(args: list, circle: list[float], expected: list[float]) -> tuple[bool, str]:
     """Emptiness, centre in the hull and optimality (see the module docstring)."""
     (points,) = args

@@ -112,6 +112,20 @@ def _where(args) -> str:
     return f" (boundary {boundary}, holes {holes}, start {start}, goal {goal})"
 
 
+#: failure message (a substring) -> the kind of mistake a hidden test's feedback shows (no numbers)
+MISTAKES = {
+    "the answer is None": "start or goal is outside the free space: the answer is None",
+    "you answered None": "a path exists, but the answer is None",
+    "empty": "the path is empty",
+    "starts at": "the path does not start at start",
+    "ends at": "the path does not end at goal",
+    "outside the free space": "a path point is outside the free space",
+    "leaves the free space": "a segment leaves the free space",
+    "the shortest has length": "the path is longer than the shortest",
+}
+
+
+@judge_io.mistake_kinds(MISTAKES, "the path is wrong")  # noqa: F821 - bound by the loader
 def check(args: list, path, expected) -> tuple[bool, str]:
     """``expected`` is a shortest path or None (the reference answer)."""
     boundary, holes, start, goal = args

@@ -83,6 +83,15 @@ def tolerance(args: list, expected: float) -> float:
     return REL_TOL * expected + ABS_TOL * big
 
 
+#: failure message (a substring) -> the kind of mistake a hidden test's feedback shows (no numbers)
+MISTAKES = {
+    "no obstacle": "with no obstacle the radius is infinite",
+    "too large": "the radius is too large",
+    "too small": "the radius is too small",
+}
+
+
+@judge_io.mistake_kinds(MISTAKES, "the radius is wrong")  # noqa: F821 - bound by the loader
 def check(args: list, r: float, expected: float) -> tuple[bool, str]:
     """Compare with the reference radius (the only possible way to judge an optimum here)."""
     if math.isinf(expected) or math.isinf(r):

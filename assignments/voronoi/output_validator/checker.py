@@ -164,6 +164,21 @@ def _convexity_fault(poly: list, eps: float) -> str:
     return ""
 
 
+#: failure message (a substring) -> the kind of mistake a hidden test's feedback shows (no numbers)
+MISTAKES = {
+    "but the true cell has": "a cell is empty or missing",
+    "not a polygon": "a cell is not a polygon",
+    "counter-clockwise": "a cell is not counter-clockwise",
+    "not convex": "a cell is not convex",
+    "winds around": "a cell winds around more than once",
+    "outside the box": "a cell vertex is outside the box",
+    "is not in the cell": "a cell vertex is not in the true cell",
+    "too small": "a cell is too small",
+    "area": "a cell has the wrong area",
+}
+
+
+@judge_io.mistake_kinds(MISTAKES, "a cell is wrong")  # noqa: F821 - bound by the loader
 def check(args: list, cells: list, expected: list) -> tuple[bool, str]:
     """Each cell against the reference cell (see the module docstring)."""
     points, bbox = args
