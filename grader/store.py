@@ -29,6 +29,8 @@ CREATE TABLE IF NOT EXISTS results (
     student TEXT, problem TEXT, sha TEXT, test TEXT, grp TEXT, verdict TEXT, time_s REAL,
     memory_mb REAL, message TEXT, input_preview TEXT, judged_at REAL, hidden_message TEXT DEFAULT '',
     PRIMARY KEY (student, problem, sha, test));
+CREATE TABLE IF NOT EXISTS seen (
+    student TEXT, problem TEXT, content TEXT, first_seen REAL, PRIMARY KEY (student, problem, content));
 CREATE TABLE IF NOT EXISTS timed (
     student TEXT, problem TEXT, started_at REAL, deadline REAL, submitted_at REAL, elapsed_s REAL,
     sha TEXT, late INTEGER, PRIMARY KEY (student, problem));
@@ -60,6 +62,20 @@ class ResultStore:
         self.db.execute("INSERT OR IGNORE INTO submissions (student, problem, sha, file, submitted_at, status) "
                         "VALUES (?, ?, ?, ?, ?, 'running')", (student, problem, sha, clean(file, 1000), submitted_at))
 
+    def first_seen(self, student: str, problem: str, content: str, now: float | None = None) -> float:
+        """When the grader first saw this content (a file's SHA-256) from this student: the time of
+        a submission, on the grader's clock (file modification times are the student's to set)."""
+        self.db.execute("INSERT OR IGNORE INTO seen VALUES (?, ?, ?, ?)",
+                        (student, problem, content, time.time() if now is None else now))
+        return self.db.execute("SELECT first_seen FROM seen WHERE student=? AND problem=? AND content=?",
+                               (student, problem, content)).fetchone()[0]
+
+    def judged_under_other_tests(self, student: str, problem: str, content: str, key: str) -> bool:
+        """Was this content graded under another version of the problem (key ``content-digest``)?"""
+        return self.db.execute("SELECT 1 FROM submissions WHERE student=? AND problem=? AND status='done' "
+                               "AND substr(sha, 1, ?) = ? AND sha != ?",
+                               (student, problem, len(content) + 1, content + "-", key)).fetchone() is not None
+
     def add_test(self, student: str, problem: str, sha: str, r: TestResult) -> None:
         self.db.execute("INSERT OR REPLACE INTO results (student, problem, sha, test, grp, verdict, time_s, memory_mb, "
                         "message, input_preview, judged_at, hidden_message) VALUES (?,?,?,?,?,?,?,?,?,?,?,?)",
@@ -84,7 +100,7 @@ class ResultStore:
 
     def submissions(self, problem: str | None = None) -> list[dict]:
         q = "SELECT student, problem, sha, file, submitted_at, status, verdict, score, max_score, multiplier, note FROM submissions"
-        rows = self.db.execute(q + (" WHERE problem=?" if problem else "") + " ORDER BY submitted_at",
+        rows = self.db.execute(q + (" WHERE problem=?" if problem else "") + " ORDER BY submitted_at, rowid",
                                (problem,) if problem else ()).fetchall()
         keys = ["student", "problem", "sha", "file", "submitted_at", "status", "verdict", "score", "max_score",
                 "multiplier", "note"]
