@@ -30,6 +30,7 @@ import re
 import subprocess
 import sys
 import tempfile
+import time
 from concurrent.futures import ProcessPoolExecutor, as_completed
 from datetime import datetime, timedelta, timezone
 from pathlib import Path
@@ -72,9 +73,23 @@ def code_key(problem: Problem, source: str) -> str:
     return hashlib.sha256(f"{problem.id}\0{problem.digest()}\0{source}".encode()).hexdigest()[:16]
 
 
+def collection_time(folder: Path) -> float | None:
+    """nbgrader's collection timestamp of a submission (``timestamp.txt`` in its folder, written
+    by ``nbgrader collect``), as epoch seconds; None when there is none or it does not parse.
+    A submission's time is this or the grader's clock, never a file's modification time."""
+    from nbgrader.utils import parse_utc
+
+    try:
+        text = (Path(folder) / "timestamp.txt").read_text().strip()
+        return parse_utc(text).timestamp() if text else None
+    except (OSError, ValueError, TypeError, OverflowError):
+        return None
+
+
 def judge_notebook_file(problem_id: str, path: Path, student: str, store_path: Path,
-                        hide: tuple[str, ...] = ()) -> JudgeResult:
-    """Judge one notebook file like ``python -m grader judge`` does, reusing stored results of the same code."""
+                        hide: tuple[str, ...] = (), submitted_at: float | None = None) -> JudgeResult:
+    """Judge one notebook file like ``python -m grader judge`` does, reusing stored results of the
+    same code. ``submitted_at``: nbgrader's collection time (default: now, on the grader's clock)."""
     problem = _problem(problem_id)
     try:
         code = Submission.from_path(path).source
@@ -86,7 +101,7 @@ def judge_notebook_file(problem_id: str, path: Path, student: str, store_path: P
         prior = store.prior(student, problem.id, key)
         if store.is_done(student, problem.id, key) and len(prior) == len(problem.tests()):
             return JudgeResult(problem.id, str(path), [prior[t.name] for t in problem.tests()], problem.group_points)
-        store.begin(student, problem.id, str(path), key, path.stat().st_mtime)
+        store.begin(student, problem.id, str(path), key, time.time() if submitted_at is None else submitted_at)
         judge = Judge(problem, hide=[*hide, str(path.resolve().parent), str(store_path.resolve().parent)])
         result = judge.judge_path(path, on_test=lambda r: store.add_test(student, problem.id, key, r), prior=prior)
         store.finish(student, problem.id, key, result)
@@ -162,8 +177,10 @@ class JudgeCells(NbGraderPreprocessor):
         with tempfile.TemporaryDirectory(prefix="nbgrader-judge-") as tmp:
             path = Path(tmp) / f"{problem.id}.ipynb"
             nbformat.write(nb, str(path))
+            folder = resources.get("metadata", {}).get("path") or ""
             result = judge_notebook_file(problem.id, path, info["student"], store_path,
-                                         hide=(str(store_path.resolve().parent),))
+                                         hide=(str(store_path.resolve().parent),),
+                                         submitted_at=collection_time(Path(folder)) if folder else None)
         self.log.info("%s / %s: %s, %s/%s", info["student"], problem.id, result.verdict, result.score, result.max_score)
         return write_results(nb, problem, result), resources
 
@@ -246,7 +263,8 @@ def _collected(submitted: Path, problem_id: str) -> list[tuple[str, Path]]:
 
 
 def _judge_job(problem_id: str, student: str, path: str, store_path: str, hide: tuple[str, ...]) -> dict:
-    r = judge_notebook_file(problem_id, Path(path), student, Path(store_path), hide)
+    r = judge_notebook_file(problem_id, Path(path), student, Path(store_path), hide,
+                            submitted_at=collection_time(Path(path).parent))
     return {"student": student, "verdict": r.verdict, "score": r.score, "max_score": r.max_score}
 
 

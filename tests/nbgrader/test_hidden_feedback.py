@@ -206,3 +206,4 @@ def test_needles_include_every_form():
     x = float(p.tests()[0].input_text.split()[1])
     assert {repr(x), x.hex()} <= needles(p) | {repr(x)[:3]}
     assert base64  # the encodings above are the submission's, not the test's
+
