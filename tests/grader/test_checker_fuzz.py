@@ -49,33 +49,36 @@ def _plant(base, path: list[int], leaf):
     return base[:k] + [_plant(base[k], path[1:], leaf)] + base[k + 1:]
 
 
+def _sample(pid: str, data):
+    """A problem's checker and one of its samples, drawn."""
+    p = PROBLEMS[pid]
+    samples = sample_data(p)
+    return (p.checker, *samples[data.draw(st.integers(0, len(samples) - 1))])
+
+
 @pytest.mark.parametrize("pid", sorted(PROBLEMS))
 @SETTINGS
 @given(data=st.data())
 def test_from_result_and_check_raise_only_presentation_errors(pid, data):
-    p = PROBLEMS[pid]
-    samples = sample_data(p)
-    args, expected = samples[data.draw(st.integers(0, len(samples) - 1))]
+    chk, args, expected = _sample(pid, data)
     base = json.loads(json.dumps(expected, allow_nan=True))
     value = data.draw(st.one_of(values, st.builds(_plant, st.just(base), st.lists(st.integers(0, 50), max_size=4),
                                                   values)))
-    assert check_one(p.checker, args, expected, "from_result", value) == ""
+    assert check_one(chk, args, expected, "from_result", value) == ""
 
 
 @pytest.mark.parametrize("pid", sorted(PROBLEMS))
 @SETTINGS
 @given(data=st.data())
 def test_read_output_and_check_raise_only_presentation_errors(pid, data):
-    p = PROBLEMS[pid]
-    samples = sample_data(p)
-    args, expected = samples[data.draw(st.integers(0, len(samples) - 1))]
-    words = p.checker.write_output(expected).split(" ")
+    chk, args, expected = _sample(pid, data)
+    words = chk.write_output(expected).split(" ")
     k = data.draw(st.integers(0, len(words)))
     text = data.draw(st.one_of(
         st.sampled_from(HOSTILE_TEXTS),
         st.builds(lambda t: " ".join(words[:k] + [t] + words[k + 1:]), tokens),
         st.lists(tokens, max_size=12).map(" ".join)))
-    assert check_one(p.checker, args, expected, "read_output", text) == ""
+    assert check_one(chk, args, expected, "read_output", text) == ""
 
 
 @pytest.mark.parametrize("pid", sorted(PROBLEMS))
