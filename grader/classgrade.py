@@ -269,6 +269,7 @@ def grade_class(problem: str, root: str | Path, db_path: str | Path, jobs: int =
     """Grade every student's submission for ``problem``; returns one summary dict per student."""
     spec = load_problem(problem)  # also: a clear error for an unknown id
     max_score = sum(spec.group_points.values())
+    _student_dirs(root)  # a missing folder is refused before a store is created
     store = ResultStore(db_path)
     todo_all = discover(root, problem, store, spec.digest())
     empty = empty_students(root, problem)
