@@ -21,7 +21,9 @@ It must not define its own ``__main__`` entry: ``export-kattis`` appends the sha
 here: the names and signatures; stdlib-only imports (checker and library, ``draw`` excepted); on
 every test ``read_input(write_input(args)) == args``, ``read_output(write_output(answer)) ==
 answer`` for the reference answer, which ``check`` accepts, also after a JSON round trip through
-``from_result``; and ``draw`` runs on the first test.
+``from_result``; ``draw`` runs on the first test; and on every committed sample the rule of
+:mod:`grader.checker_attacks` holds: ``from_result``, ``read_output`` and ``check`` raise nothing but
+``PresentationError`` (or ``WrongAnswer``) on a fixed corpus of hostile answers.
 
 Example:
     >>> from grader.problems import load_problem
@@ -37,7 +39,7 @@ import json
 import sys
 from typing import Any, Sequence
 
-from . import checker_runtime
+from . import checker_attacks, checker_runtime, hidden_feedback
 
 REQUIRED = {"read_input": 1, "write_input": 1, "from_result": 2, "read_output": 2, "write_output": 1, "check": 3}
 OPTIONAL = {"read_answer": 2, "draw": 4}
@@ -106,6 +108,9 @@ def _interface_errors(problem) -> list[str]:
     pe = getattr(chk, "PresentationError", None)
     if not (isinstance(pe, type) and issubclass(pe, Exception)):
         errors.append("checker lacks PresentationError (an Exception subclass)")
+    for kind in dict(getattr(chk, "MISTAKES", None) or {}).values():
+        if hidden_feedback.safe_kind(kind) != kind:
+            errors.append(f"MISTAKES kind {kind!r} would be dropped from hidden feedback: short text, no digits")
     return errors
 
 
@@ -174,6 +179,12 @@ def validate_checker(problem, tests: Sequence | None = None) -> list[str]:
             errors += _test_errors(problem, test)
         except Exception as exc:  # noqa: BLE001
             errors.append(f"{test.name}: {type(exc).__name__}: {exc}")
+    if not errors:
+        try:
+            for args, expected in checker_attacks.sample_data(problem):
+                errors += [f"hostile answer: {e}" for e in checker_attacks.rule_violations(problem.checker, args, expected)]
+        except Exception as exc:  # noqa: BLE001
+            errors.append(f"the hostile-answer corpus could not run: {type(exc).__name__}: {exc}")
     if tests and not errors:
         try:
             errors += _draw_errors(problem, tests[0])

@@ -9,7 +9,12 @@ Every student folder gets a CSV row: an empty folder (no .py/.ipynb file) scores
 "no submission"; when a folder holds several candidate files, the note (and a line on stderr)
 says which one was judged and why. The progress display names the students being judged and
 counts the tests done, including results resumed from the store after an interrupted batch.
-``--reports DIR`` also writes ``DIR/index.html``, linking every student's report.
+``--reports DIR`` writes each student's report to ``DIR/students/`` (file names from
+:func:`grader.report.report_name`: no collision, no path, no URL scheme) before marking the student
+done, rebuilds a missing one on resume, and writes ``DIR/index.html`` linking them all.
+Submission times are the grader's (when it first saw a file's content), never file mtimes; the
+store key includes the problem's digest, so changed tests or points judge everyone again (said on
+stderr and in the CSV note).
 
 Example:
     python -m grader grade delaunay class/ --db results.sqlite --jobs 2 --csv grades.csv
@@ -27,7 +32,7 @@ import time
 from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Iterable
+from typing import Callable, Iterable
 
 from .submissions import SubmissionError, read_submission_bytes
 from .text import clean, csv_cell
@@ -42,40 +47,70 @@ from .verdicts import JudgeResult, TestResult
 class Job:
     student: str
     path: str
-    sha: str
-    submitted_at: float
+    sha: str  #: the store key: the content's hash, and the problem's digest when graded as a class
+    submitted_at: float  #: when the grader first saw this content (never the file's mtime)
     note: str = ""  #: why this file was chosen, when the folder held several
 
 
 NO_SUBMISSION = "no submission (no .py or .ipynb file in the folder)"
 
 
-def choose_submission(student_dir: Path, problem: str) -> tuple[Path | None, str]:
+def choose_submission(student_dir: Path, problem: str,
+                      seen: Callable[[Path], float] | None = None) -> tuple[Path | None, str]:
     """The student's file and, when there were several candidates, why it was chosen:
-    ``<problem>.py``/``.ipynb`` if present, else the newest .py/.ipynb.
+    ``<problem>.py``/``.ipynb`` if present, else the one the grader saw last (``seen(path)``: when
+    the grader first saw that file's content; never the file's modification time, which the
+    student controls), then the last by name.
 
     >>> import tempfile; d = Path(tempfile.mkdtemp())
     >>> _ = (d / "a.py").write_text(""); _ = (d / "delaunay.py").write_text("")
     >>> f, why = choose_submission(d, "delaunay"); f.name, why
     ('delaunay.py', 'judged delaunay.py of 2 files (a.py, delaunay.py): it is named after the problem')
     """
+    seen = seen or (lambda p: 0.0)
     files = sorted(p for p in student_dir.iterdir() if p.is_file() and p.suffix in (".py", ".ipynb"))
     named = [p for p in files if p.stem == problem]
     pool = named or files
     if not pool:
         return None, NO_SUBMISSION
-    chosen = max(pool, key=lambda p: (p.stat().st_mtime, p.name))
+    chosen = max(pool, key=lambda p: (seen(p), p.name))
     if len(files) == 1:
         return chosen, ""
-    why = "it is named after the problem" if named else "it is the most recently modified"
+    why = "it is named after the problem" if named else "it is the one the grader saw last"
     if len(named) > 1:
-        why += " and the most recently modified of those"
+        why += " and the one the grader saw last of those"
     return chosen, f"judged {chosen.name} of {len(files)} files ({', '.join(p.name for p in files)}): {why}"
 
 
 def find_submission(student_dir: Path, problem: str) -> Path | None:
     """The student's file (see :func:`choose_submission`), or None."""
     return choose_submission(student_dir, problem)[0]
+
+
+def student_ids(dirs: list[Path]) -> tuple[dict[Path, str], list[str]]:
+    """Each student folder's id (its name made safe by :func:`grader.text.clean`), unique: when
+    two names clean to the same id (``bob<ESC>`` and ``bob\\x1b``), each name that is not its own
+    clean form gets a suffix from its raw bytes; and one warning per collision.
+
+    >>> esc, shown = "bob" + chr(27), "bob" + chr(92) + "x1b"    # clean(esc) == shown
+    >>> ids, warnings = student_ids([Path("bob"), Path(esc), Path(shown)])
+    >>> ids[Path(shown)] == shown, ids[Path(esc)].startswith(shown + "~"), len(warnings)
+    (True, True, 1)
+    """
+    by_id: dict[str, list[Path]] = {}
+    for d in dirs:
+        by_id.setdefault(clean(d.name, 200), []).append(d)
+    ids, warnings = {}, []
+    for cid, group in by_id.items():
+        if len(group) == 1:
+            ids[group[0]] = cid
+            continue
+        for d in group:
+            raw = os.fsencode(d.name)
+            ids[d] = cid if d.name == cid else f"{cid}~{hashlib.sha256(raw).hexdigest()[:8]}"
+        warnings.append(f"{len(group)} student folders read as {cid!r}: kept apart as "
+                        + ", ".join(repr(ids[d]) for d in group))
+    return ids, warnings
 
 
 def _student_dirs(root: str | Path) -> list[Path]:
@@ -85,24 +120,41 @@ def _student_dirs(root: str | Path) -> list[Path]:
     return sorted(p for p in root.iterdir() if p.is_dir())
 
 
-def discover(root: str | Path, problem: str) -> list[Job]:
-    """One job per student directory under ``root`` that holds a submission."""
+def content_sha(path: Path) -> str:
+    """SHA-256 (16 hex digits) of a submission file's bytes, or of the reason it cannot be read."""
+    try:  # links, special files and oversize files are not read: judging reports them as CE
+        data = read_submission_bytes(path)
+    except SubmissionError as exc:
+        data = f"unreadable: {exc}".encode()
+    return hashlib.sha256(data).hexdigest()[:16]
+
+
+def discover(root: str | Path, problem: str, store: ResultStore | None = None, digest: str = "") -> list[Job]:
+    """One job per student directory under ``root`` that holds a submission. With a ``store``,
+    submission times are when the grader first saw each file's content (recorded now if never);
+    the store key is the content's hash and the problem's ``digest`` (changed tests or points:
+    a new key, so the student is judged again)."""
     jobs = []
-    for d in _student_dirs(root):
-        f, why = choose_submission(d, problem)
+    ids, _ = student_ids(_student_dirs(root))
+    for d, student in ids.items():
+        shas: dict[Path, str] = {}
+
+        def seen(p: Path) -> float:
+            shas[p] = content_sha(p)
+            return store.first_seen(student, problem, shas[p]) if store is not None else 0.0
+
+        f, why = choose_submission(d, problem, seen)
         if f is not None:
-            try:  # links, special files and oversize files are not read: judging reports them as CE
-                data = read_submission_bytes(f)
-            except SubmissionError as exc:
-                data = f"unreadable: {exc}".encode()
-            jobs.append(Job(clean(d.name, 200), str(f), hashlib.sha256(data).hexdigest()[:16], f.lstat().st_mtime,
-                            clean(why, 500)))
+            sha = shas.get(f) or content_sha(f)
+            key = f"{sha}-{digest[:8]}" if digest else sha
+            jobs.append(Job(student, str(f), key, seen(f) if store is not None else 0.0, clean(why, 500)))
     return jobs
 
 
 def empty_students(root: str | Path, problem: str) -> list[str]:
     """Student directories under ``root`` without any submission file."""
-    return [clean(d.name, 200) for d in _student_dirs(root) if choose_submission(d, problem)[0] is None]
+    ids, _ = student_ids(_student_dirs(root))
+    return [ids[d] for d in ids if choose_submission(d, problem)[0] is None]
 
 
 def _die_with_parent(parent: int) -> None:
@@ -136,11 +188,11 @@ def grade_local(problem: str, job: Job, db_path: str, hide: tuple[str, ...], rep
         judge = _judge_for(problem, hide)
         result = judge.judge_path(job.path, on_test=lambda r: store.add_test(job.student, problem, job.sha, r),
                                   prior=prior)
-        store.finish(job.student, problem, job.sha, result, note=job.note)
-        if report_dir:
-            from .report import write_report
+        if report_dir:  # before the student is marked done: a kill in between leaves them to resume
+            from .report import student_report_path, write_report
 
-            write_report(result, Path(report_dir) / f"{job.student}.html", judge.problem, student=job.student)
+            write_report(result, student_report_path(report_dir, job.student), judge.problem, student=job.student)
+        store.finish(job.student, problem, job.sha, result, note=job.note)
         return {"student": job.student, "verdict": result.verdict, "score": result.score,
                 "max_score": result.max_score, "resumed": len(prior), "tests": len(result.tests)}
     finally:
@@ -216,11 +268,21 @@ def grade_class(problem: str, root: str | Path, db_path: str | Path, jobs: int =
                 csv_path: str | Path | None = None, report_dir: str | Path | None = None,
                 progress: bool = True) -> list[dict]:
     """Grade every student's submission for ``problem``; returns one summary dict per student."""
-    max_score = sum(load_problem(problem).group_points.values())  # also: a clear error for an unknown id
-    todo_all = discover(root, problem)
-    empty = empty_students(root, problem)
+    spec = load_problem(problem)  # also: a clear error for an unknown id
+    max_score = sum(spec.group_points.values())
+    _student_dirs(root)  # a missing folder is refused before a store is created
     store = ResultStore(db_path)
+    todo_all = discover(root, problem, store, spec.digest())
+    empty = empty_students(root, problem)
+    for warning in student_ids(_student_dirs(root))[1]:
+        print(warning, file=sys.stderr)
     todo = [j for j in todo_all if not store.is_done(j.student, problem, j.sha)]
+    rejudged = [j for j in todo if store.judged_under_other_tests(j.student, problem, j.sha.split("-")[0], j.sha)]
+    for j in rejudged:
+        j.note = "; ".join(filter(None, [j.note, "judged again: the problem's tests or points changed"]))
+    if rejudged:
+        print(f"{problem}: {len(rejudged)} submissions judged again: the problem's tests or points changed since "
+              "they were graded", file=sys.stderr)
     summaries = [{"student": j.student, "skipped": "already graded"} for j in todo_all if j not in todo]
     summaries += [{"student": st, "verdict": "", "score": 0, "max_score": max_score, "skipped": NO_SUBMISSION}
                   for st in empty]
@@ -275,9 +337,30 @@ def grade_class(problem: str, root: str | Path, db_path: str | Path, jobs: int =
     if report_dir:
         from .report import write_index
 
+        rebuilt = _rebuild_missing_reports(spec, todo_all, store, Path(report_dir))
+        if rebuilt and progress:
+            print(f"{problem}: {rebuilt} reports rebuilt from the store (they were missing)", file=sys.stderr)
         write_index(Path(report_dir), problem, store, empty)
     store.close()
     return summaries
+
+
+def _rebuild_missing_reports(spec, jobs: list[Job], store: ResultStore, report_dir: Path) -> int:
+    """Write the report of every graded student whose report is missing (a kill between judging
+    and the report, a new ``--reports`` folder, a Dask run) from the stored results (without the
+    picture, which needs the answer itself); how many were written."""
+    from .report import student_report_path, write_report
+
+    n = 0
+    for j in jobs:
+        path = student_report_path(report_dir, j.student)
+        if path.is_file() or not store.is_done(j.student, spec.id, j.sha):
+            continue
+        prior = store.prior(j.student, spec.id, j.sha)
+        result = JudgeResult(spec.id, j.path, [prior[t.name] for t in spec.tests() if t.name in prior], spec.group_points)
+        write_report(result, path, spec, student=j.student)
+        n += 1
+    return n
 
 
 def _add_empty_rows(csv_path: str | Path, problem: str, students: list[str], max_score: int) -> None:

@@ -20,6 +20,8 @@ import traceback
 from pathlib import Path
 from typing import Callable, Sequence
 
+from . import hidden_feedback
+from .check_budget import CheckTimeout, check_seconds, cpu_budget
 from .problems import Problem, TestCase, load_problem
 from .runner import FunctionWorker, RunOutcome, idle_budget_for, run_stdio
 from .jail import Limits, Sandbox
@@ -122,6 +124,7 @@ class Judge:
         self.hide = list(hide)
         self.tests = self.problem.tests()
         self.limits = Limits(cpu_s=self.problem.time_limit, memory_mb=self.problem.memory_mb, output_mb=self.problem.output_mb)
+        self.check_cpu_s = check_seconds(self.problem.time_limit)  #: CPU budget of one check (grader.check_budget)
         self.cover = installed_paths([m for m in self.problem.forbidden if m not in ("reference_impl", "grader")])
         self._args = [None] * len(self.tests)
         self._answers = [None] * len(self.tests)
@@ -206,11 +209,39 @@ class Judge:
         result.judge_time_s = time.monotonic() - t0
         return result
 
+    def _check(self, r: TestResult, value, args, expected, function_mode: bool) -> None:
+        """Type-check and check one answer into ``r``, under a CPU budget of its own
+        (:mod:`grader.check_budget`): a check that runs too long is ``TLE``, never a hung grader."""
+        chk = self.problem.checker
+        budget = self.check_cpu_s
+        try:
+            with cpu_budget(budget):
+                try:
+                    answer = chk.from_result(value, args) if function_mode else chk.read_output(value, args)
+                except chk.PresentationError as exc:
+                    r.verdict, r.message = Verdict.PE, str(exc)
+                    r.hidden_message = hidden_feedback.for_checker("PE", exc)
+                    return
+                except getattr(chk, "WrongAnswer", ()) as exc:  # optional: wrong before any real check
+                    r.verdict, r.message = Verdict.WA, str(exc)
+                    r.hidden_message = hidden_feedback.for_checker("WA", exc)
+                    return
+                ok, message = chk.check(args, answer, expected)
+        except CheckTimeout:
+            r.verdict = Verdict.TLE
+            r.message = (f"checking your answer took more than {budget:g} s of the grader's CPU time: the answer "
+                         "is far larger, or far harder to check, than a correct one")
+            r.hidden_message = "time limit exceeded: checking the answer took too long"
+            return
+        r.verdict, r.message = (Verdict.AC, "") if ok else (Verdict.WA, message)
+        if not ok:
+            r.received = answer
+            r.hidden_message = hidden_feedback.for_checker("WA", message)
+
     def _run_one(self, box: Sandbox, worker: FunctionWorker | None, sub: Submission, k: int,
                  idle_left: float) -> tuple[TestResult, float]:
         """One test's result and the wall time the submission spent not computing in it."""
         test = self.tests[k]
-        chk = self.problem.checker
         idle = 0.0
         before = 0
         try:
@@ -224,25 +255,15 @@ class Judge:
             idle = outcome.idle_s
             r = TestResult(test.name, test.group, Verdict.JE, outcome.time_s, round(outcome.memory_mb, 1))
             if outcome.status == "ok":
-                try:
-                    if worker is not None:
-                        answer = chk.from_result(outcome.value, args)
-                    else:
-                        answer = chk.read_output(outcome.value, args)
-                except chk.PresentationError as exc:
-                    r.verdict, r.message = Verdict.PE, str(exc)
-                except getattr(chk, "WrongAnswer", ()) as exc:  # optional: wrong before any real check
-                    r.verdict, r.message = Verdict.WA, str(exc)
-                else:
-                    ok, message = chk.check(args, answer, expected)
-                    r.verdict, r.message = (Verdict.AC, "") if ok else (Verdict.WA, message)
-                    if not ok:
-                        r.received = answer
+                self._check(r, outcome.value, args, expected, function_mode=worker is not None)
             else:
                 r.verdict, r.message = _verdict_for(outcome)
+                r.hidden_message = hidden_feedback.for_run(str(r.verdict), outcome.message, outcome.where,
+                                                           len(sub.source.splitlines()))
         except Exception as exc:  # noqa: BLE001 - only the judge's own code runs here
             r = TestResult(test.name, test.group, Verdict.JE, 0.0, 0.0,
                            f"judge error: {type(exc).__name__}: {exc}\n{traceback.format_exc(limit=3)}")
+            r.hidden_message = "judge error"
         if r.verdict not in (Verdict.AC, Verdict.SKIPPED):
             r.input_preview = preview(test)
             if worker is not None and r.verdict != Verdict.JE:
@@ -250,6 +271,7 @@ class Judge:
                 if printed.strip():
                     r.message += f"\n--- your print() output in this test ---\n{printed}"
         r.message = clean(r.message, 4000, newlines=True)  # checker messages quote student data
+        r.hidden_message = clean(r.hidden_message, 300)
         return r, idle
 
 

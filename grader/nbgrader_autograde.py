@@ -8,8 +8,9 @@ extraction, same sandbox, same tests), and writes each scored group's result int
 cell: a short stdout line when every test passed (full points), an error output with the verdict
 and message when not (zero). nbgrader's gradebook, ``generate_feedback`` and ``export`` then work
 unchanged. No kernel is started, so nothing a student writes can rewrite cells, monkeypatch the
-tests or reach ``gradebook.db``. Feedback never holds hidden inputs: scored groups show the verdict,
-time and the checker's message with floating-point numbers masked, never the test input.
+tests or reach ``gradebook.db``. Feedback never holds hidden data: scored groups show the verdict,
+time and the kind of mistake (:mod:`grader.hidden_feedback`), never the checker's detail, the
+student's exception text or prints, or the test input.
 
 Results are kept per (student, problem, code) in ``judged.sqlite`` next to the gradebook, so the
 parallel path (:func:`grade_course`, ``python -m grader grade PROBLEM assignments/submitted
@@ -29,6 +30,7 @@ import re
 import subprocess
 import sys
 import tempfile
+import time
 from concurrent.futures import ProcessPoolExecutor, as_completed
 from datetime import datetime, timedelta, timezone
 from pathlib import Path
@@ -72,9 +74,23 @@ def code_key(problem: Problem, source: str) -> str:
     return hashlib.sha256(f"{problem.id}\0{problem.digest()}\0{source}".encode()).hexdigest()[:16]
 
 
+def collection_time(folder: Path) -> float | None:
+    """nbgrader's collection timestamp of a submission (``timestamp.txt`` in its folder, written
+    by ``nbgrader collect``), as epoch seconds; None when there is none or it does not parse.
+    A submission's time is this or the grader's clock, never a file's modification time."""
+    from nbgrader.utils import parse_utc
+
+    try:
+        text = (Path(folder) / "timestamp.txt").read_text().strip()
+        return parse_utc(text).timestamp() if text else None
+    except (OSError, ValueError, TypeError, OverflowError):
+        return None
+
+
 def judge_notebook_file(problem_id: str, path: Path, student: str, store_path: Path,
-                        hide: tuple[str, ...] = ()) -> JudgeResult:
-    """Judge one notebook file like ``python -m grader judge`` does, reusing stored results of the same code."""
+                        hide: tuple[str, ...] = (), submitted_at: float | None = None) -> JudgeResult:
+    """Judge one notebook file like ``python -m grader judge`` does, reusing stored results of the
+    same code. ``submitted_at``: nbgrader's collection time (default: now, on the grader's clock)."""
     problem = _problem(problem_id)
     try:
         code = Submission.from_path(path).source
@@ -86,7 +102,7 @@ def judge_notebook_file(problem_id: str, path: Path, student: str, store_path: P
         prior = store.prior(student, problem.id, key)
         if store.is_done(student, problem.id, key) and len(prior) == len(problem.tests()):
             return JudgeResult(problem.id, str(path), [prior[t.name] for t in problem.tests()], problem.group_points)
-        store.begin(student, problem.id, str(path), key, path.stat().st_mtime)
+        store.begin(student, problem.id, str(path), key, time.time() if submitted_at is None else submitted_at)
         judge = Judge(problem, hide=[*hide, str(path.resolve().parent), str(store_path.resolve().parent)])
         result = judge.judge_path(path, on_test=lambda r: store.add_test(student, problem.id, key, r), prior=prior)
         store.finish(student, problem.id, key, result)
@@ -96,8 +112,13 @@ def judge_notebook_file(problem_id: str, path: Path, student: str, store_path: P
 
 
 def _line(t: TestResult, hidden: bool) -> str:
-    msg = (t.message.splitlines() or [""])[0][:300]
-    return f"{t.name:16} {str(t.verdict):3} {t.time_s:7.3f} s  {mask_numbers(msg) if hidden else msg}".rstrip()
+    """One test's feedback line. A hidden test shows only its ``hidden_message`` (the kind of mistake:
+    never the checker's detail, the student's exception text or prints; :mod:`grader.hidden_feedback`)."""
+    if hidden:
+        msg = "" if t.verdict in (Verdict.AC,) else mask_numbers(t.hidden_message or DESCRIPTIONS.get(str(t.verdict), ""))
+    else:
+        msg = (t.message.splitlines() or [""])[0][:300]
+    return f"{t.name:16} {str(t.verdict):3} {t.time_s:7.3f} s  {msg}".rstrip()
 
 
 def group_output(result: JudgeResult, group: str, points: int) -> dict:
@@ -158,8 +179,10 @@ class JudgeCells(NbGraderPreprocessor):
         with tempfile.TemporaryDirectory(prefix="nbgrader-judge-") as tmp:
             path = Path(tmp) / f"{problem.id}.ipynb"
             nbformat.write(nb, str(path))
+            folder = resources.get("metadata", {}).get("path") or ""
             result = judge_notebook_file(problem.id, path, info["student"], store_path,
-                                         hide=(str(store_path.resolve().parent),))
+                                         hide=(str(store_path.resolve().parent),),
+                                         submitted_at=collection_time(Path(folder)) if folder else None)
         self.log.info("%s / %s: %s, %s/%s", info["student"], problem.id, result.verdict, result.score, result.max_score)
         return write_results(nb, problem, result), resources
 
@@ -242,7 +265,8 @@ def _collected(submitted: Path, problem_id: str) -> list[tuple[str, Path]]:
 
 
 def _judge_job(problem_id: str, student: str, path: str, store_path: str, hide: tuple[str, ...]) -> dict:
-    r = judge_notebook_file(problem_id, Path(path), student, Path(store_path), hide)
+    r = judge_notebook_file(problem_id, Path(path), student, Path(store_path), hide,
+                            submitted_at=collection_time(Path(path).parent))
     return {"student": student, "verdict": r.verdict, "score": r.score, "max_score": r.max_score}
 
 

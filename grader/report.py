@@ -20,10 +20,12 @@ Example:
 from __future__ import annotations
 
 import base64
+import hashlib
 import html
 import io
 import re
 import textwrap
+import urllib.parse
 from pathlib import Path
 from typing import Any
 
@@ -165,6 +167,27 @@ table{border-collapse:collapse} tr.bad td:nth-child(2){color:#b00;font-weight:bo
 td.AC{color:#070} td.bad{color:#b00;font-weight:bold}"""
 
 
+STUDENTS_DIR = "students"  #: class reports live in ``REPORTS/students/``, the index in ``REPORTS/index.html``
+
+
+def report_name(student: str) -> str:
+    """The file name of a student's class report: the name's safe characters and a hash of the
+    whole name, so no two students (nor the index) share a file, and no name is a path or a URL.
+
+    >>> report_name("javascript:alert(1)")
+    'javascript-alert-1-d0ee0421.html'
+    >>> report_name("index") != "index.html"
+    True
+    """
+    slug = re.sub(r"[^A-Za-z0-9_.]+", "-", student).strip("-.")[:60] or "student"
+    return f"{slug}-{hashlib.sha256(student.encode('utf-8', 'surrogatepass')).hexdigest()[:8]}.html"
+
+
+def student_report_path(report_dir: str | Path, student: str) -> Path:
+    """Where ``grade --reports DIR`` writes ``student``'s report."""
+    return Path(report_dir) / STUDENTS_DIR / report_name(student)
+
+
 def write_report(result: JudgeResult, path: str | Path, problem: Problem, student: str = "") -> Path:
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
@@ -187,8 +210,9 @@ def write_index(report_dir: Path, problem: str, store, no_submission: list[str] 
     body = []
     for student in sorted({*latest, *no_submission}):
         s = latest.get(student)
-        link = f'<a href="{html.escape(student)}.html">{html.escape(student)}</a>' \
-            if (report_dir / f"{student}.html").is_file() else html.escape(student)
+        href = f"{STUDENTS_DIR}/{urllib.parse.quote(report_name(student))}"
+        link = f'<a href="{html.escape(href)}">{html.escape(student)}</a>' \
+            if student_report_path(report_dir, student).is_file() else html.escape(student)
         if s is None:
             body.append(f"<tr><td>{link}</td><td>-</td><td>0</td><td>no submission</td>"
                         + "<td></td>" * len(names) + "</tr>")

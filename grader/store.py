@@ -27,8 +27,10 @@ CREATE TABLE IF NOT EXISTS submissions (
     PRIMARY KEY (student, problem, sha));
 CREATE TABLE IF NOT EXISTS results (
     student TEXT, problem TEXT, sha TEXT, test TEXT, grp TEXT, verdict TEXT, time_s REAL,
-    memory_mb REAL, message TEXT, input_preview TEXT, judged_at REAL,
+    memory_mb REAL, message TEXT, input_preview TEXT, judged_at REAL, hidden_message TEXT DEFAULT '',
     PRIMARY KEY (student, problem, sha, test));
+CREATE TABLE IF NOT EXISTS seen (
+    student TEXT, problem TEXT, content TEXT, first_seen REAL, PRIMARY KEY (student, problem, content));
 CREATE TABLE IF NOT EXISTS timed (
     student TEXT, problem TEXT, started_at REAL, deadline REAL, submitted_at REAL, elapsed_s REAL,
     sha TEXT, late INTEGER, PRIMARY KEY (student, problem));
@@ -45,6 +47,13 @@ class ResultStore:
             self.db.execute("PRAGMA journal_mode=WAL")
         self.db.execute("PRAGMA busy_timeout=60000")
         self.db.executescript(SCHEMA)
+        self._migrate()
+
+    def _migrate(self) -> None:
+        """Columns added since a store was created (an older store keeps its rows)."""
+        have = {r[1] for r in self.db.execute("PRAGMA table_info(results)")}
+        if "hidden_message" not in have:
+            self.db.execute("ALTER TABLE results ADD COLUMN hidden_message TEXT DEFAULT ''")
 
     def close(self) -> None:
         self.db.close()
@@ -53,15 +62,30 @@ class ResultStore:
         self.db.execute("INSERT OR IGNORE INTO submissions (student, problem, sha, file, submitted_at, status) "
                         "VALUES (?, ?, ?, ?, ?, 'running')", (student, problem, sha, clean(file, 1000), submitted_at))
 
+    def first_seen(self, student: str, problem: str, content: str, now: float | None = None) -> float:
+        """When the grader first saw this content (a file's SHA-256) from this student: the time of
+        a submission, on the grader's clock (file modification times are the student's to set)."""
+        self.db.execute("INSERT OR IGNORE INTO seen VALUES (?, ?, ?, ?)",
+                        (student, problem, content, time.time() if now is None else now))
+        return self.db.execute("SELECT first_seen FROM seen WHERE student=? AND problem=? AND content=?",
+                               (student, problem, content)).fetchone()[0]
+
+    def judged_under_other_tests(self, student: str, problem: str, content: str, key: str) -> bool:
+        """Was this content graded under another version of the problem (key ``content-digest``)?"""
+        return self.db.execute("SELECT 1 FROM submissions WHERE student=? AND problem=? AND status='done' "
+                               "AND substr(sha, 1, ?) = ? AND sha != ?",
+                               (student, problem, len(content) + 1, content + "-", key)).fetchone() is not None
+
     def add_test(self, student: str, problem: str, sha: str, r: TestResult) -> None:
-        self.db.execute("INSERT OR REPLACE INTO results VALUES (?,?,?,?,?,?,?,?,?,?,?)",
+        self.db.execute("INSERT OR REPLACE INTO results (student, problem, sha, test, grp, verdict, time_s, memory_mb, "
+                        "message, input_preview, judged_at, hidden_message) VALUES (?,?,?,?,?,?,?,?,?,?,?,?)",
                         (student, problem, sha, r.name, r.group, str(r.verdict), r.time_s, r.memory_mb,
-                         r.message[:4000], r.input_preview[:4000], time.time()))
+                         r.message[:4000], r.input_preview[:4000], time.time(), r.hidden_message[:1000]))
 
     def prior(self, student: str, problem: str, sha: str) -> dict[str, TestResult]:
-        rows = self.db.execute("SELECT test, grp, verdict, time_s, memory_mb, message, input_preview FROM results "
-                               "WHERE student=? AND problem=? AND sha=?", (student, problem, sha)).fetchall()
-        return {r[0]: TestResult(r[0], r[1], Verdict(r[2]), r[3], r[4], r[5], r[6]) for r in rows}
+        rows = self.db.execute("SELECT test, grp, verdict, time_s, memory_mb, message, input_preview, hidden_message "
+                               "FROM results WHERE student=? AND problem=? AND sha=?", (student, problem, sha)).fetchall()
+        return {r[0]: TestResult(r[0], r[1], Verdict(r[2]), r[3], r[4], r[5], r[6], r[7] or "") for r in rows}
 
     def finish(self, student: str, problem: str, sha: str, result: JudgeResult, multiplier: float = 1.0,
                note: str = "") -> None:
@@ -76,7 +100,7 @@ class ResultStore:
 
     def submissions(self, problem: str | None = None) -> list[dict]:
         q = "SELECT student, problem, sha, file, submitted_at, status, verdict, score, max_score, multiplier, note FROM submissions"
-        rows = self.db.execute(q + (" WHERE problem=?" if problem else "") + " ORDER BY submitted_at",
+        rows = self.db.execute(q + (" WHERE problem=?" if problem else "") + " ORDER BY submitted_at, rowid",
                                (problem,) if problem else ()).fetchall()
         keys = ["student", "problem", "sha", "file", "submitted_at", "status", "verdict", "score", "max_score",
                 "multiplier", "note"]

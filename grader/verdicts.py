@@ -43,7 +43,9 @@ DESCRIPTIONS = {
 
 @dataclass
 class TestResult:
-    """One test's outcome. ``input_preview`` is the failing input for small tests (for students)."""
+    """One test's outcome. ``input_preview`` is the failing input for small tests (for students).
+    ``message`` is the detail (instructor, reports, public tests); ``hidden_message`` what a student
+    may see when the test is hidden (:mod:`grader.hidden_feedback`; empty: the verdict's description)."""
 
     __test__ = False  # not a pytest test class
 
@@ -54,6 +56,7 @@ class TestResult:
     memory_mb: float = 0.0
     message: str = ""
     input_preview: str = ""
+    hidden_message: str = ""
     received: Any = field(default=None, repr=False, compare=False)  #: a wrong answer, for reports only
 
     def to_json(self) -> dict:
@@ -64,7 +67,7 @@ class TestResult:
 
     @classmethod
     def from_json(cls, d: dict) -> "TestResult":
-        keys = {"name", "group", "verdict", "time_s", "memory_mb", "message", "input_preview"}
+        keys = {"name", "group", "verdict", "time_s", "memory_mb", "message", "input_preview", "hidden_message"}
         return cls(**{k: v for k, v in d.items() if k in keys and k != "verdict"}, verdict=Verdict(d["verdict"]))
 
 

@@ -8,7 +8,10 @@ Every decision is exact: coordinates are read as ``Fraction``s of the input doub
 How a segment is tested: its parameters where it meets any wall (proper crossings, touching
 vertices, ends of collinear overlaps) cut it into open pieces that cross no wall, so each piece
 lies entirely in one region; the midpoint of each piece decides (on a wall, or in the closed
-free space), and so do the segment's two ends. Cost O(walls x pieces) per segment.
+free space), and so do the segment's two ends. Walls whose bounding box misses the segment's (or,
+for a point, whose y-range misses the point's y) are skipped first by comparing the input doubles
+themselves, which is exact (rounding to the nearest double is monotonic): a path of many short segments costs about O(walls) float comparisons
+per point plus exact work on the few walls nearby (``navmesh``'s checker on a padded path).
 
 Run the doctests:  python -m pytest reference_impl/exact/free_space.py
 
@@ -45,15 +48,34 @@ def _on_segment(p, a, b) -> bool:
             and min(a[1], b[1]) <= p[1] <= max(a[1], b[1]))
 
 
-def _rings(boundary, holes) -> list[list[tuple[Fraction, Fraction]]]:
-    return [[_q(p) for p in boundary]] + [[_q(p) for p in h] for h in holes]
+class _Ring(list):
+    """A ring's vertices as Fractions, with each edge's bounding box in floats (``boxes[i]`` is
+    ``(xmin, xmax, ymin, ymax)`` of the edge from vertex i to i + 1)."""
+
+    boxes: list
+
+
+def _ring(points) -> _Ring:
+    ring = _Ring(_q(p) for p in points)
+    fl = [(float(p[0]), float(p[1])) for p in points]
+    ring.boxes = [(min(a[0], b[0]), max(a[0], b[0]), min(a[1], b[1]), max(a[1], b[1]))
+                  for a, b in zip(fl, fl[1:] + fl[:1])]
+    return ring
+
+
+def _rings(boundary, holes) -> list[_Ring]:
+    return [_ring(boundary)] + [_ring(h) for h in holes]
 
 
 def _where(p, ring) -> int:
     """1 strictly inside the ring, 0 on it, -1 strictly outside (exact winding number)."""
     wn = 0
     n = len(ring)
+    boxes = getattr(ring, "boxes", None)
+    py = float(p[1])   # rounding is monotonic and the box ends are doubles: py < ymin implies p's y < ymin
     for i in range(n):
+        if boxes is not None and (py < boxes[i][2] or py > boxes[i][3]):
+            continue   # neither on this edge nor crossing p's horizontal line
         a, b = ring[i], ring[(i + 1) % n]
         if _on_segment(p, a, b):
             return 0
@@ -85,9 +107,18 @@ def _segment_free(p, q, rings) -> bool:
     d = (q[0] - p[0], q[1] - p[1])
     dd = d[0] * d[0] + d[1] * d[1]
     cuts = {Fraction(0), Fraction(1)}
+    # the segment's box in floats: rounding is monotonic and wall ends are doubles, so a wall box
+    # that misses this one (strictly) misses the exact box too
+    lo_x, hi_x = float(min(p[0], q[0])), float(max(p[0], q[0]))
+    lo_y, hi_y = float(min(p[1], q[1])), float(max(p[1], q[1]))
     for ring in rings:
         n = len(ring)
+        boxes = getattr(ring, "boxes", None)
         for i in range(n):
+            if boxes is not None:
+                bx = boxes[i]
+                if bx[1] < lo_x or bx[0] > hi_x or bx[3] < lo_y or bx[2] > hi_y:
+                    continue   # the wall's box misses the segment's: no crossing, no overlap
             a, b = ring[i], ring[(i + 1) % n]
             e = (b[0] - a[0], b[1] - a[1])
             den = d[0] * e[1] - d[1] * e[0]

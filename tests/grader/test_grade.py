@@ -15,6 +15,7 @@ import time
 import pytest
 
 from grader.classgrade import discover, grade_class
+from grader.report import report_name, student_report_path
 
 from .conftest import HERE, REPO
 
@@ -47,7 +48,7 @@ def test_grade_class_parallel_with_csv_and_reports(tmp_path, fixture_problems, c
     assert verdicts == {"ada": "AC", "bob": "WA", "cy": "CE", "dee": "AC"}
     rows = list(csv.DictReader(open(tmp_path / "grades.csv")))
     assert {r["student"]: r["score"] for r in rows} == {"ada": "100.0", "bob": "0.0", "cy": "0.0", "dee": "100.0"}
-    assert (tmp_path / "reports" / "bob.html").read_text().count("data:image/png") == 1
+    assert student_report_path(tmp_path / "reports", "bob").read_text().count("data:image/png") == 1
     assert "graded 4/4" in capsys.readouterr().err  # plain progress lines when stderr is not a TTY
     again = grade_class(fixture_problems, root, db, jobs=2)
     assert all(s.get("skipped") for s in again)
@@ -103,8 +104,10 @@ def test_empty_folder_and_several_candidates(tmp_path, fixture_problems, capsys)
     os.utime(root / "fay" / "scratch.py")  # newer, but the file named after the problem wins
     (root / "gus").mkdir()
     (root / "gus" / "old.py").write_text("def delaunay(points):\n    return []\n")
+    grade_class(fixture_problems, root, tmp_path / "r.sqlite", progress=False)  # the grader sees old.py first
+    capsys.readouterr()
     (root / "gus" / "new.py").write_text(ACCEPTED)
-    os.utime(root / "gus" / "old.py", (1e9, 1e9))
+    os.utime(root / "gus" / "new.py", (1e9, 1e9))  # dated 2001: the grader's first sight counts, not the mtime
     out = grade_class(fixture_problems, root, tmp_path / "r.sqlite", csv_path=tmp_path / "g.csv",
                       report_dir=tmp_path / "reports")
     rows = {r["student"]: r for r in csv.DictReader(open(tmp_path / "g.csv"))}
@@ -112,13 +115,15 @@ def test_empty_folder_and_several_candidates(tmp_path, fixture_problems, capsys)
     assert rows["eve"]["score"] == "0" and rows["eve"]["note"].startswith("no submission")
     assert rows["fay"]["score"] == "100.0" and "named after the problem" in rows["fay"]["note"]
     assert f"judged {fixture_problems}.py of 2 files" in rows["fay"]["note"]
-    assert rows["gus"]["file"].endswith("new.py") and "most recently modified" in rows["gus"]["note"]
+    assert rows["gus"]["file"].endswith("new.py") and "the one the grader saw last" in rows["gus"]["note"]
     err = capsys.readouterr().err
     assert "eve: no submission" in err and "gus: judged new.py of 2 files" in err
-    assert "3 student folders: 2 to judge, 0 already graded, 1 without a submission" in err
+    assert "3 student folders: 1 to judge, 1 already graded, 1 without a submission" in err, err
+    assert "1 reports rebuilt from the store" in err  # fay's, graded by the first run without --reports
     assert {s["student"] for s in out} == {"eve", "fay", "gus"}
     index = (tmp_path / "reports" / "index.html").read_text()
-    assert '<a href="fay.html">fay</a>' in index and '<a href="gus.html">gus</a>' in index
+    assert f'<a href="students/{report_name("fay")}">fay</a>' in index
+    assert f'<a href="students/{report_name("gus")}">gus</a>' in index
     assert "eve</td><td>-</td><td>0</td><td>no submission" in index
 
 
@@ -128,8 +133,11 @@ def test_progress_counts_tests_and_resumed_results(tmp_path, fixture_problems, c
     from grader.store import ResultStore
     from grader.verdicts import TestResult, Verdict
 
-    ada = next(j for j in discover(root, fixture_problems) if j.student == "ada")
+    from grader.problems import load_problem
+
     store = ResultStore(db)  # as if a killed batch had stored ada's first test
+    ada = next(j for j in discover(root, fixture_problems, store, load_problem(fixture_problems).digest())
+               if j.student == "ada")
     store.begin("ada", fixture_problems, ada.path, ada.sha, ada.submitted_at)
     store.add_test("ada", fixture_problems, ada.sha, TestResult("tiny/1-tutorial", "tiny", Verdict.AC, 0.01, 30.0))
     store.close()

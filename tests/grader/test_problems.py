@@ -106,6 +106,9 @@ def _broken_copy(tmp_path, edit) -> Problem:
     (lambda s: s.replace("    return ok, message\n", "    return False, 'no'\n"), "reference answer is rejected"),
     (lambda s: s.replace("    return ok, message\n", "    return int(ok), message\n"), "check must return (bool, message)"),
     (lambda s: s.replace("        ax.set_aspect(", "        1 / 0\n        ax.set_aspect("), "draw failed"),
+    # issue 23's crash: isdigit() is true for '²', int('²') raises; 5000 digits exceed int()'s limit
+    (lambda s: s.replace("    if announced is not None:\n", "    if first.isdigit():\n        announced = int(first)\n"
+                         "    if announced is not None:\n"), "hostile answer: read_output raised ValueError"),
 ])
 def test_protocol_violations_are_reported(tmp_path, edit, finding):
     errors = validate_checker(_broken_copy(tmp_path, edit))

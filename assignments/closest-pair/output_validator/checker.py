@@ -16,6 +16,7 @@ import math
 LIBRARY = ("judge_io", "verify")  # bound as globals by the shared loader
 
 PresentationError = judge_io.PresentationError  # noqa: F821 - bound by the loader
+show, mistake = judge_io.show, judge_io.mistake  # noqa: F821 - safe previews, two-part messages
 
 
 def read_input(text: str) -> list:
@@ -30,7 +31,7 @@ def write_input(args: list) -> str:
 def from_result(value, args: list) -> list[int]:
     """A returned ``[i, j]`` (a list, tuple or numpy array of two ints)."""
     if not isinstance(value, list) or len(value) != 2:
-        raise PresentationError(f"expected a pair [i, j] of indices, got {str(value)[:60]}")
+        raise PresentationError(f"expected a pair [i, j] of indices, got {show(value, 60)}")
     return [judge_io.as_index(v, "the pair") for v in value]  # noqa: F821
 
 
@@ -38,17 +39,23 @@ def read_output(text: str, args: list) -> list[int]:
     """Program output: one line ``i j``."""
     lines = [ln for ln in text.split("\n", 3)[:3] if ln.strip()]
     if len(lines) != 1 or len(text.split()) != 2:
-        raise PresentationError(f"expected one line 'i j', got {text[:60]!r}")
-    try:
-        return [int(t) for t in text.split()]
-    except ValueError:
-        raise PresentationError(f"the indices must be integers, got {text[:60]!r}") from None
+        raise PresentationError(f"expected one line 'i j', got {show(text, 60)}")
+    return [judge_io.parse_int(t, "the pair", "an integer index") for t in text.split()]  # noqa: F821
 
 
 def write_output(pair: list) -> str:
     return f"{pair[0]} {pair[1]}\n"
 
 
+#: failure message (a substring) -> the kind of mistake a hidden test's feedback shows (no numbers)
+MISTAKES = {
+    "outside 0..": "an index is out of range",
+    "twice": "the two indices are the same point",
+    "floating point": "not a closest pair (compare squared distances exactly)",
+}
+
+
+@judge_io.mistake_kinds(MISTAKES, "not a closest pair")  # noqa: F821 - bound by the loader
 def check(args: list, pair: list[int], expected: list[int] | None) -> tuple[bool, str]:
     """Exact check; ``expected`` is a closest pair (the reference answer)."""
     (points,) = args

@@ -22,6 +22,7 @@ LIBRARY = ("judge_io", "verify")  # bound as globals by the shared loader
 SMALL = 24                        # inputs up to this many points are quoted in messages
 
 PresentationError = judge_io.PresentationError  # noqa: F821 - bound by the loader
+show, mistake = judge_io.show, judge_io.mistake  # noqa: F821 - safe previews, two-part messages
 
 
 def read_input(text: str) -> list:
@@ -64,6 +65,21 @@ def read_output(text: str, args: list | None) -> list[list[int]]:
     return judge_io.read_index_rows(text, 4, "tetrahedron", _limit(args))  # noqa: F821
 
 
+#: failure message (a substring) -> the kind of mistake a hidden test's feedback shows (no numbers)
+MISTAKES = {
+    "outside 0..": "a tetrahedron uses an index out of range",
+    "flat": "a tetrahedron is flat",
+    "coplanar": "the tetrahedra do not fit the coplanar case",
+    "overlap": "tetrahedra overlap",
+    "same side": "tetrahedra overlap",
+    "not Delaunay": "a face is not Delaunay",
+    "circumsphere": "a point lies inside a circumsphere",
+    "convex hull": "the tetrahedra do not fill the convex hull",
+    "not a vertex": "a point is not a vertex of any tetrahedron",
+}
+
+
+@judge_io.mistake_kinds(MISTAKES, "not a valid Delaunay tetrahedralisation")  # noqa: F821 - bound by the loader
 def check(args: list, tets: list[list[int]], expected: list[list[int]] | None) -> tuple[bool, str]:
     """Exact check; ``expected`` (the reference answer) only improves the message."""
     (points,) = args

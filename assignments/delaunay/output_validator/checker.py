@@ -23,6 +23,7 @@ from __future__ import annotations
 LIBRARY = ("judge_io", "verify")  # reference_impl/<name>.py, bound as globals by the shared loader
 
 PresentationError = judge_io.PresentationError  # noqa: F821 - bound by the loader
+show, mistake = judge_io.show, judge_io.mistake  # noqa: F821 - safe previews, two-part messages
 
 
 class WrongAnswer(Exception):
@@ -68,11 +69,29 @@ def from_result(value, args: list) -> list[list[int]]:
 def read_output(text: str, args: list) -> list[list[int]]:
     """Parse program output: m, then m lines 'i j k'."""
     first = text.lstrip().split("\n", 1)[0].strip()
-    if first.isdigit():
-        _at_most(int(first), args)
+    try:
+        announced = judge_io.parse_int(first, "the first line")  # noqa: F821 - ASCII digits, bounded length
+    except PresentationError:
+        announced = None  # read_index_rows says what is wrong with it
+    if announced is not None:
+        _at_most(announced, args)
     return judge_io.read_index_rows(text, 3, "triangle", _limit(args))  # noqa: F821
 
 
+#: failure message (a substring) -> the kind of mistake a hidden test's feedback shows (no numbers)
+MISTAKES = {
+    "outside 0..": "a triangle uses an index out of range",
+    "counter-clockwise": "a triangle is not counter-clockwise",
+    "collinear": "triangles given for collinear points",
+    "overlap": "triangles overlap",
+    "convex hull": "the triangles do not cover the convex hull exactly",
+    "not a vertex": "a point is not a vertex of any triangle",
+    "not Delaunay": "an edge is not Delaunay",
+    "circumcircle": "a point lies inside a circumcircle",
+}
+
+
+@judge_io.mistake_kinds(MISTAKES, "not a valid Delaunay triangulation")  # noqa: F821 - bound by the loader
 def check(args: list, triangles: list[list[int]], expected: list[list[int]] | None) -> tuple[bool, str]:
     """Exact check; ``expected`` (the reference answer) only improves the message."""
     (points,) = args

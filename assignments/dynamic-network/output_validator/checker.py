@@ -17,6 +17,7 @@ from __future__ import annotations
 LIBRARY = ("judge_io",)  # bound as globals by the shared loader
 
 PresentationError = judge_io.PresentationError  # noqa: F821 - bound by the loader
+show, mistake = judge_io.show, judge_io.mistake  # noqa: F821 - safe previews, two-part messages
 
 SHOW_OPERATIONS = 30  # sequences up to this long are quoted in a wrong answer's message
 
@@ -48,11 +49,11 @@ def _answer(value, op, k: int, joins: int):
     if name == "fail":
         if value in ("ok", "error") and type(value) is str:
             return value
-        raise PresentationError(f"{where}: expected \"ok\" or \"error\", got {str(value)[:40]!r}")
+        raise PresentationError(f"{where}: expected \"ok\" or \"error\", got {show(value, 40)}")
     if type(value) is str:
         if value == "error":
             return value
-        raise PresentationError(f"{where}: expected a list of ids or \"error\", got {value[:40]!r}")
+        raise PresentationError(f"{where}: expected a list of ids or \"error\", got {show(value, 40)}")
     if not isinstance(value, list):
         raise PresentationError(f"{where}: expected a list of ids or \"error\", got {type(value).__name__}")
     if len(value) > joins:
@@ -64,7 +65,7 @@ def from_result(value, args: list) -> list:
     """One answer per operation: ints for join/count, "ok"/"error" for fail, a list of ints or "error"."""
     (ops,) = args
     if not isinstance(value, list):
-        raise PresentationError(f"expected a list of {len(ops)} answers, got {type(value).__name__}: {str(value)[:60]}")
+        raise PresentationError(f"expected a list of {len(ops)} answers, got {type(value).__name__}: {show(value, 60)}")
     if len(value) != len(ops):
         raise PresentationError(f"expected one answer per operation ({len(ops)}), got {len(value)}")
     out, joins = [], 0
@@ -88,16 +89,13 @@ def read_output(text: str, args: list) -> list:
         if op[0] == "fail" or parts == ["error"]:
             out.append(_answer(ln.strip(), op, k, joins))
             continue
-        try:
-            nums = [int(p) for p in parts]
-        except ValueError:
-            raise PresentationError(f"{where}: expected integers, got {ln[:60]!r}") from None
+        nums = [judge_io.parse_int(p, where, "integers") for p in parts]  # noqa: F821
         if op[0] != "neighbors":
             if len(nums) != 1:
-                raise PresentationError(f"{where}: expected one integer, got {ln[:60]!r}")
+                raise PresentationError(f"{where}: expected one integer, got {show(ln, 60)}")
             out.append(nums[0])
         elif nums[0] != len(nums) - 1 or nums[0] < 0:
-            raise PresentationError(f"{where}: expected m and then m ids, got {ln[:60]!r}")
+            raise PresentationError(f"{where}: expected m and then m ids, got {show(ln, 60)}")
         else:
             out.append(_answer(nums[1:], op, k, joins))
     return out
@@ -107,6 +105,13 @@ def write_output(answers: list) -> str:
     return "".join((" ".join(map(str, [len(a)] + a)) if isinstance(a, list) else str(a)) + "\n" for a in answers)
 
 
+#: failure message (a substring) -> the kind of mistake a hidden test's feedback shows (no numbers)
+MISTAKES = {
+    "sorted increasing": "a neighbour list is not sorted or has repeats",
+}
+
+
+@judge_io.mistake_kinds(MISTAKES, "an answer differs from the correct one")  # noqa: F821 - bound by the loader
 def check(args: list, answers: list, expected: list | None) -> tuple[bool, str]:
     """Exact comparison with the reference answers; the message names the first wrong one."""
     (ops,) = args

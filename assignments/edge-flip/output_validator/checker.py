@@ -22,6 +22,7 @@ LIBRARY = ("judge_io", "verify")  # bound as globals by the shared loader
 SMALL = 16                        # triangulations up to this many points are quoted in messages
 
 PresentationError = judge_io.PresentationError  # noqa: F821 - bound by the loader
+show, mistake = judge_io.show, judge_io.mistake  # noqa: F821 - safe previews, two-part messages
 
 
 def read_input(text: str) -> list:
@@ -112,6 +113,18 @@ def replay(points, triangles, flips) -> tuple[list | None, str]:
     return final, "ok"
 
 
+#: failure message (a substring) -> the kind of mistake a hidden test's feedback shows (no numbers)
+MISTAKES = {
+    "index outside": "a flip uses an index out of range",
+    "not an edge": "a flip is not an edge of the current triangulation",
+    "convex hull edge": "a flip is of a convex hull edge",
+    "already locally Delaunay": "a flipped edge was already locally Delaunay",
+    "strictly convex": "a flip of a non-convex quadrilateral",
+    "not Delaunay": "the final triangulation is not Delaunay",
+}
+
+
+@judge_io.mistake_kinds(MISTAKES, "the flips are wrong")  # noqa: F821 - bound by the loader
 def check(args: list, flips: list[list[int]], expected: list[list[int]] | None) -> tuple[bool, str]:
     """Replay and check; ``expected`` (the reference flips) only improves the message."""
     points, triangles = args

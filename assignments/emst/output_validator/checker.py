@@ -19,6 +19,7 @@ import math
 LIBRARY = ("judge_io", "verify")  # bound as globals by the shared loader
 
 PresentationError = judge_io.PresentationError  # noqa: F821 - bound by the loader
+show, mistake = judge_io.show, judge_io.mistake  # noqa: F821 - safe previews, two-part messages
 EXPLAIN_MAX_N = 300  # below this, a wrong tree's message names an edge swap that shortens it
 
 
@@ -106,6 +107,17 @@ def _swap_hint(P, edges, expected, length) -> str:
     return ""
 
 
+#: failure message (a substring) -> the kind of mistake a hidden test's feedback shows (no numbers)
+MISTAKES = {
+    "edges, you gave": "the number of edges is not n minus one",
+    "outside 0..": "an edge uses an index out of range",
+    "to itself": "an edge joins a point to itself",
+    "cycle": "the edges contain a cycle",
+    "not exactly": "not a minimum spanning tree (compare lengths exactly)",
+}
+
+
+@judge_io.mistake_kinds(MISTAKES, "not a minimum spanning tree")  # noqa: F821 - bound by the loader
 def check(args: list, edges: list[list[int]], expected: list[list[int]] | None) -> tuple[bool, str]:
     """Exact check; ``expected`` is a minimum spanning tree (the reference answer)."""
     (points,) = args

@@ -31,6 +31,7 @@ ABS_TOL = 1e-14   # times the largest absolute coordinate
 LIBRARY = ("judge_io",)  # reference_impl/judge_io.py (points format, PresentationError), bound by the loader
 
 PresentationError = judge_io.PresentationError  # noqa: F821 - bound by the loader
+show, mistake = judge_io.show, judge_io.mistake  # noqa: F821 - safe previews, two-part messages
 
 
 def read_input(text: str) -> list:
@@ -49,14 +50,10 @@ def write_output(circle) -> str:
 
 def _circle(values, where: str) -> list[float]:
     if len(values) != 3:
-        raise PresentationError(f"{where} should be 3 numbers [x, y, r], got {len(values)}: {str(values)[:60]}")
+        raise PresentationError(f"{where} should be 3 numbers [x, y, r], got {len(values)}: {show(values, 60)}")
     out = []
     for name, v in zip("xyr", values):
-        if type(v) not in (int, float):
-            raise PresentationError(f"{where}: {name} should be a number, got {type(v).__name__}: {str(v)[:40]}")
-        if not math.isfinite(v):
-            raise PresentationError(f"{where}: {name} = {v!r} is not finite")
-        out.append(float(v))
+        out.append(judge_io.number(v, f"{where}: {name}", "a coordinate or the radius"))  # noqa: F821
     if out[2] < 0:
         raise PresentationError(f"{where}: the radius {out[2]!r} is negative")
     return out
@@ -65,17 +62,17 @@ def _circle(values, where: str) -> list[float]:
 def from_result(value, args: list) -> list[float]:
     """Type-check what ``largest_empty_circle`` returned: ``[x, y, r]`` of finite numbers, r >= 0."""
     if not isinstance(value, list):
-        raise PresentationError(f"expected [x, y, r], got {type(value).__name__}: {str(value)[:60]}")
+        raise PresentationError(f"expected [x, y, r], got {type(value).__name__}: {show(value, 60)}")
     return _circle(value, "the returned circle")
 
 
 def read_output(text: str, args: list) -> list[float]:
     """Parse program output: one line ``x y r``."""
     tok = text.split()
-    try:
-        values = [float(t) for t in tok]
-    except ValueError:
-        raise PresentationError(f"expected three numbers 'x y r', got {text[:60]!r}") from None
+    if len(tok) != 3:
+        raise PresentationError(f"expected three numbers 'x y r', got {len(tok)} tokens: {show(text, 60)}",
+                                kind="expected three numbers x y r")
+    values = [judge_io.parse_float(t, "the printed circle", "three numbers x y r") for t in tok]  # noqa: F821
     return _circle(values, "the printed circle")
 
 
@@ -112,6 +109,16 @@ def convex_hull(points: list) -> list[int]:
     return lower[:-1] + upper[:-1]
 
 
+#: failure message (a substring) -> the kind of mistake a hidden test's feedback shows (no numbers)
+MISTAKES = {
+    "strictly inside the circle": "a point lies strictly inside the circle",
+    "outside the convex hull": "the centre is outside the convex hull",
+    "not the largest": "the radius is too small",
+    "larger than the optimum": "the radius is too large",
+}
+
+
+@judge_io.mistake_kinds(MISTAKES, "the circle is wrong")  # noqa: F821 - bound by the loader
 def check(args: list, circle: list[float], expected: list[float]) -> tuple[bool, str]:
     """Emptiness, centre in the hull and optimality (see the module docstring)."""
     (points,) = args

@@ -20,6 +20,7 @@ import math
 LIBRARY = ("judge_io", "free_space")  # bound as globals by the shared loader
 
 PresentationError = judge_io.PresentationError  # noqa: F821 - bound by the loader
+show, mistake = judge_io.show, judge_io.mistake  # noqa: F821 - safe previews, two-part messages
 RELATIVE_TOLERANCE = 1e-9
 EXPLAIN_MAX_VERTICES = 60  # below this, a failing message shows the whole input
 
@@ -57,12 +58,7 @@ def _limit(args) -> int:
 
 
 def _number(v, where: str) -> float:
-    if type(v) not in (int, float):
-        raise PresentationError(f"{where}: {str(v)[:40]!r} is a {type(v).__name__}, not a number")
-    x = float(v)
-    if not math.isfinite(x):
-        raise PresentationError(f"{where}: coordinate {x!r} is not finite")
-    return x
+    return judge_io.number(v, where)  # noqa: F821 - finite float or PresentationError, never OverflowError
 
 
 def from_result(value, args: list) -> list[list[float]] | None:
@@ -77,7 +73,7 @@ def from_result(value, args: list) -> list[list[float]] | None:
     path = []
     for k, p in enumerate(value):
         if not isinstance(p, (list, tuple)) or len(p) != 2:
-            raise PresentationError(f"point {k}: expected [x, y], got {str(p)[:60]!r}")
+            raise PresentationError(f"point {k}: expected [x, y], got {show(p, 60)}")
         path.append([_number(p[0], f"point {k}"), _number(p[1], f"point {k}")])
     return path
 
@@ -87,10 +83,7 @@ def read_output(text: str, args: list) -> list[list[float]] | None:
     tok = text.split()
     if not tok:
         raise PresentationError("empty output: expected the number of path points k (0 for no path)")
-    try:
-        k = int(tok[0])
-    except ValueError:
-        raise PresentationError(f"first token must be the number of points k, got {tok[0][:40]!r}") from None
+    k = judge_io.parse_int(tok[0], "the first token", "the number of points k")  # noqa: F821
     if k < 0 or k > _limit(args):
         raise PresentationError(f"k = {k}: a shortest path has between 1 and {_limit(args)} points (0 for no path)")
     if len(tok) != 1 + 2 * k:
@@ -99,12 +92,9 @@ def read_output(text: str, args: list) -> list[list[float]] | None:
         return None
     path = []
     for i in range(k):
-        try:
-            p = [float(tok[1 + 2 * i]), float(tok[2 + 2 * i])]
-        except ValueError:
-            raise PresentationError(f"point {i}: not a number in {tok[1 + 2 * i][:30]!r} {tok[2 + 2 * i][:30]!r}") from None
+        p = [judge_io.parse_float(tok[1 + 2 * i], f"point {i}"), judge_io.parse_float(tok[2 + 2 * i], f"point {i}")]  # noqa: F821
         if not all(math.isfinite(c) for c in p):
-            raise PresentationError(f"point {i}: coordinates must be finite")
+            raise PresentationError(f"point {i}: coordinates must be finite", kind="a coordinate is not finite")
         path.append(p)
     return path
 
@@ -122,6 +112,20 @@ def _where(args) -> str:
     return f" (boundary {boundary}, holes {holes}, start {start}, goal {goal})"
 
 
+#: failure message (a substring) -> the kind of mistake a hidden test's feedback shows (no numbers)
+MISTAKES = {
+    "the answer is None": "start or goal is outside the free space: the answer is None",
+    "you answered None": "a path exists, but the answer is None",
+    "empty": "the path is empty",
+    "starts at": "the path does not start at start",
+    "ends at": "the path does not end at goal",
+    "outside the free space": "a path point is outside the free space",
+    "leaves the free space": "a segment leaves the free space",
+    "the shortest has length": "the path is longer than the shortest",
+}
+
+
+@judge_io.mistake_kinds(MISTAKES, "the path is wrong")  # noqa: F821 - bound by the loader
 def check(args: list, path, expected) -> tuple[bool, str]:
     """``expected`` is a shortest path or None (the reference answer)."""
     boundary, holes, start, goal = args

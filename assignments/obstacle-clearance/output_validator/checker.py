@@ -28,6 +28,7 @@ ABS_TOL = 1e-14   # times the largest absolute coordinate
 LIBRARY = ("judge_io",)  # reference_impl/judge_io.py (points format, PresentationError), bound by the loader
 
 PresentationError = judge_io.PresentationError  # noqa: F821 - bound by the loader
+show, mistake = judge_io.show, judge_io.mistake  # noqa: F821 - safe previews, two-part messages
 
 
 def read_input(text: str) -> list:
@@ -50,8 +51,12 @@ def write_output(r: float) -> str:
 
 def _radius(v, where: str) -> float:
     if type(v) not in (int, float):
-        raise PresentationError(f"{where} should be a number (float), got {type(v).__name__}: {str(v)[:60]}")
-    r = float(v)
+        raise PresentationError(f"{where} should be a number (float), got {type(v).__name__}: {show(v, 60)}",
+                                kind="the radius is not a number")
+    try:
+        r = float(v)
+    except OverflowError:  # an int of hundreds of digits
+        raise PresentationError(f"{where}: the integer is too large for a float", kind="the radius is too large") from None
     if math.isnan(r) or r < 0:
         raise PresentationError(f"{where} should be a non-negative number or inf, got {r!r}")
     return r
@@ -66,11 +71,8 @@ def read_output(text: str, args: list) -> float:
     """Parse program output: one number (``inf`` when there is no obstacle)."""
     tok = text.split()
     if len(tok) != 1:
-        raise PresentationError(f"expected one number, got {len(tok)} tokens: {text[:60]!r}")
-    try:
-        value = float(tok[0])
-    except ValueError:
-        raise PresentationError(f"expected a number, got {tok[0][:60]!r}") from None
+        raise PresentationError(f"expected one number, got {len(tok)} tokens: {show(text, 60)}")
+    value = judge_io.parse_float(tok[0], "the printed radius")  # noqa: F821
     return _radius(value, "the printed radius")
 
 
@@ -81,6 +83,15 @@ def tolerance(args: list, expected: float) -> float:
     return REL_TOL * expected + ABS_TOL * big
 
 
+#: failure message (a substring) -> the kind of mistake a hidden test's feedback shows (no numbers)
+MISTAKES = {
+    "no obstacle": "with no obstacle the radius is infinite",
+    "too large": "the radius is too large",
+    "too small": "the radius is too small",
+}
+
+
+@judge_io.mistake_kinds(MISTAKES, "the radius is wrong")  # noqa: F821 - bound by the loader
 def check(args: list, r: float, expected: float) -> tuple[bool, str]:
     """Compare with the reference radius (the only possible way to judge an optimum here)."""
     if math.isinf(expected) or math.isinf(r):

@@ -17,6 +17,7 @@ from __future__ import annotations
 LIBRARY = ("judge_io", "verify")  # bound as globals by the shared loader
 
 PresentationError = judge_io.PresentationError  # noqa: F821 - bound by the loader
+show, mistake = judge_io.show, judge_io.mistake  # noqa: F821 - safe previews, two-part messages
 
 
 def read_input(text: str) -> list:
@@ -55,6 +56,18 @@ def _witness(P: list, i: int, j: int, first: dict) -> int | None:
     return None
 
 
+#: failure message (a substring) -> the kind of mistake a hidden test's feedback shows (no numbers)
+MISTAKES = {
+    "outside 0..": "an edge uses an index out of range",
+    "repeats point": "a repeated point is not named by its smallest index",
+    "to itself": "an edge joins a point to itself",
+    "listed twice": "an edge is listed twice",
+    "is not a Gabriel edge": "an edge is not a Gabriel edge",
+    "missing the Gabriel edge": "a Gabriel edge is missing",
+}
+
+
+@judge_io.mistake_kinds(MISTAKES, "not the Gabriel graph")  # noqa: F821 - bound by the loader
 def check(args: list, edges: list[list[int]], expected: list[list[int]] | None) -> tuple[bool, str]:
     """Exact check; ``expected`` is the Gabriel graph (the reference answer)."""
     (points,) = args

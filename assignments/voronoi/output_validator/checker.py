@@ -35,6 +35,7 @@ REL_TOL = 1e-9    # times the larger side of the box
 ABS_TOL = 1e-14   # times the largest absolute coordinate
 
 PresentationError = judge_io.PresentationError  # noqa: F821 - bound by the loader
+show, mistake = judge_io.show, judge_io.mistake  # noqa: F821 - safe previews, two-part messages
 
 
 def read_input(text: str) -> list:
@@ -60,11 +61,7 @@ def max_vertices(n: int) -> tuple[int, int]:
 
 
 def _number(v, where: str) -> float:
-    if type(v) not in (int, float):
-        raise PresentationError(f"{where} should be a number, got {type(v).__name__}: {str(v)[:40]}")
-    if not math.isfinite(v):
-        raise PresentationError(f"{where} = {v!r} is not finite")
-    return float(v)
+    return judge_io.number(v, where, "a vertex coordinate")  # noqa: F821 - finite float, never OverflowError
 
 
 def _cells(rows: list, n: int) -> list:
@@ -86,10 +83,10 @@ def from_result(value, args: list) -> list:
     """Type-check what ``voronoi_cells`` returned: one list of ``[x, y]`` pairs per input point."""
     points = args[0]
     if not isinstance(value, list):
-        raise PresentationError(f"expected a list of cells (polygons), got {type(value).__name__}: {str(value)[:60]}")
+        raise PresentationError(f"expected a list of cells (polygons), got {type(value).__name__}: {show(value, 60)}")
     for i, cell in enumerate(value[:len(points) + 1]):
         if not isinstance(cell, list) or not all(isinstance(p, list) and len(p) == 2 for p in cell[:len(points) + 9]):
-            raise PresentationError(f"cell {i} should be a list of [x, y] vertices, got {str(cell)[:60]}")
+            raise PresentationError(f"cell {i} should be a list of [x, y] vertices, got {show(cell, 60)}")
     return _cells(value, len(points))
 
 
@@ -105,11 +102,8 @@ def read_output(text: str, args: list) -> list:
         tok = ln.split()
         if len(tok) > 1 + 2 * per_cell:   # bound the work before converting anything
             raise PresentationError(f"line {i + 1}: {len(tok)} numbers, more than any correct cell needs")
-        try:
-            k = int(tok[0])
-            vals = [float(t) for t in tok[1:]]
-        except ValueError:
-            raise PresentationError(f"line {i + 1}: expected 'k x1 y1 ... xk yk', got {ln[:60]!r}") from None
+        k = judge_io.parse_int(tok[0], f"line {i + 1}", "the number of vertices k")  # noqa: F821
+        vals = [judge_io.parse_float(t, f"line {i + 1}", "a vertex coordinate") for t in tok[1:]]  # noqa: F821
         if k < 0 or len(vals) != 2 * k:
             raise PresentationError(f"line {i + 1}: announced {k} vertices but {len(vals)} numbers follow")
         rows.append([[vals[2 * j], vals[2 * j + 1]] for j in range(k)])
@@ -170,6 +164,21 @@ def _convexity_fault(poly: list, eps: float) -> str:
     return ""
 
 
+#: failure message (a substring) -> the kind of mistake a hidden test's feedback shows (no numbers)
+MISTAKES = {
+    "but the true cell has": "a cell is empty or missing",
+    "not a polygon": "a cell is not a polygon",
+    "counter-clockwise": "a cell is not counter-clockwise",
+    "not convex": "a cell is not convex",
+    "winds around": "a cell winds around more than once",
+    "outside the box": "a cell vertex is outside the box",
+    "is not in the cell": "a cell vertex is not in the true cell",
+    "too small": "a cell is too small",
+    "area": "a cell has the wrong area",
+}
+
+
+@judge_io.mistake_kinds(MISTAKES, "a cell is wrong")  # noqa: F821 - bound by the loader
 def check(args: list, cells: list, expected: list) -> tuple[bool, str]:
     """Each cell against the reference cell (see the module docstring)."""
     points, bbox = args
