@@ -4,7 +4,7 @@
 reference) and lists the flagged pairs; ``DIR/similarity/pair-N.html`` shows one flagged pair side
 by side with the shared regions highlighted; ``DIR/similarity.csv`` has one row per compared pair.
 Everything that came from a submission (folder names, file names, code) is escaped for HTML;
-links to a student's grading report (``DIR/<student>.html``, when ``grade --reports`` wrote one)
+links to a student's grading report (``DIR/students/...``, when ``grade --reports`` wrote one)
 are URL-quoted; CSV cells go through :func:`grader.text.csv_cell`.
 
 Example:
@@ -24,6 +24,7 @@ from urllib.parse import quote
 
 import numpy as np
 
+from .report import STUDENTS_DIR, report_name
 from .similarity import Analysis, Pair
 from .text import clean, csv_cell
 
@@ -79,8 +80,9 @@ def _page(title: str, body: str) -> str:
 
 def _student_link(report_dir: Path, name: str, kind: str, prefix: str = "") -> str:
     """The name, linked to the student's grading report when there is one."""
-    if kind == "student" and (report_dir / f"{name}.html").is_file():
-        return f'<a href="{html.escape(prefix + quote(name + ".html"))}">{html.escape(name)}</a>'
+    target = f"{STUDENTS_DIR}/{report_name(name)}"   # where ``grade --reports`` puts it
+    if kind == "student" and (report_dir / target).is_file():
+        return f'<a href="{html.escape(prefix + quote(target))}">{html.escape(name)}</a>'
     return html.escape(name)
 
 

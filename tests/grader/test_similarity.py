@@ -17,6 +17,7 @@ from pathlib import Path
 import pytest
 
 from grader import similarity as sim
+from grader.report import report_name
 from grader.similarity_report import show_code
 
 from .conftest import HERE, REPO
@@ -144,13 +145,14 @@ def test_everything_from_submissions_is_escaped(tmp_path):
         (tmp_path / "class" / name / "delaunay.py").write_text(code + "\x1b[2J\n")
     out = tmp_path / "out"
     out.mkdir()
-    (out / f"{evil}.html").write_text("grading report")  # as `grade --reports` names it
+    (out / "students").mkdir()
+    (out / "students" / report_name(evil)).write_text("grading report")  # as `grade --reports` names it
     a = sim.run("delaunay", tmp_path / "class", out)
     assert len(a.flagged) == 1
     text = (out / "similarity.html").read_text() + (out / "similarity" / "pair-1.html").read_text()
     assert "<script>" not in text and "<img" not in text and "\x1b" not in text
     assert "&lt;img src=x onerror=alert(1)&gt;&amp;&quot;" in text and "\\x1b" in text
-    assert 'href="%3Cimg%20src%3Dx%20onerror%3Dalert%281%29%3E%26%22.html"' in text
+    assert f'href="students/{report_name(evil)}"' in text and "%3C" not in report_name(evil)
     assert "'=cmd" in (out / "similarity.csv").read_text()
     assert show_code("a<b>", sim.np.zeros((2, 0), dtype=int)) == "a&lt;b&gt;"
 
@@ -196,7 +198,7 @@ def test_grade_similarity_writes_the_report_next_to_the_grades(tmp_path):
     assert r.returncode == 0, r.stderr
     assert "kim  ~  lou" in r.stderr and "kim" in r.stdout
     page = (tmp_path / "reports" / "similarity.html").read_text()
-    assert 'href="kim.html"' in page  # linked to the grading report
+    assert f'href="students/{report_name("kim")}"' in page  # linked to the grading report
 
 
 def test_scores_are_the_same_in_every_run(tmp_path):
