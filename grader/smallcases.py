@@ -80,7 +80,8 @@ def variants(config: Sequence[Point]) -> list[list[list[int]]]:
     first = [list(p) for p in _interleave(config)]
     if len(config) < 2:
         return [first]
-    return [first, [list(p[::-1]) for p in _interleave(config[::-1])]]
+    second = [list(p[::-1]) for p in _interleave(config[::-1])]
+    return [first] if second == first else [first, second]
 
 
 def point_lists(dim: int = 2, min_n: int = 1, **kw: Any) -> list[list[list[int]]]:

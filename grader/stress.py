@@ -126,12 +126,19 @@ def random_case(problem_id: str, rng: random.Random, size: int) -> dict:
 
 
 def candidates(case: dict) -> Iterator[dict]:
-    """Smaller variants of ``case``: one point, hole or operation dropped."""
+    """Smaller variants of ``case``: a run of points, holes or operations dropped, halves first
+    and single elements last (so a long failing input shrinks in few rounds)."""
     for key in ("points", "holes", "operations"):
         items = case.get(key)
-        if isinstance(items, list) and len(items) > (1 if key == "points" else 0):
-            for i in range(len(items)):
-                yield {**case, key: items[:i] + items[i + 1:]}
+        if not isinstance(items, list) or len(items) <= (1 if key == "points" else 0):
+            continue
+        size = len(items) // 2
+        while size >= 1:
+            for i in range(0, len(items), size):
+                rest = items[:i] + items[i + size:]
+                if rest or key != "points":
+                    yield {**case, key: rest}
+            size //= 2
 
 
 class _Runner:
