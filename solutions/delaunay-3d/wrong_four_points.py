@@ -3,6 +3,8 @@
 The shortcut: "four points are one tetrahedron". Four coplanar points (a face of the cube), or a
 repeated point, have none.
 
+Killed by: exhaustive
+
 It is `accepted_bw3d.py` with one change, marked `SHORTCUT` below; `python -m grader stress delaunay-3d wrong_four_points.py`
 finds an input that shows it. Function mode: the grader calls delaunay_3d(points). Stdio mode / Kattis:
 python3 wrong_four_points.py < input

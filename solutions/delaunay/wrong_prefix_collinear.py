@@ -4,6 +4,8 @@ The shortcut: "if the first three points are collinear, all of them are, so ther
 triangle". A collinear prefix of a set that is not collinear (three points of a grid row, then one
 above it) gets no triangles.
 
+Killed by: exhaustive
+
 It is `accepted_walk.py` with one change, marked `SHORTCUT` below; `python -m grader stress delaunay wrong_prefix_collinear.py`
 finds an input that shows it. Function mode: the grader calls delaunay(points). Stdio mode / Kattis:
 python3 wrong_prefix_collinear.py < input
@@ -175,13 +177,15 @@ def main():
     sys.stdout.write(f"{len(tris)}\n" + "".join(f"{a} {b} {c}\n" for a, b, c in tris))
 
 
+from fractions import Fraction  # noqa: E402
+
 _delaunay = delaunay
 
 
 def delaunay(points):  # SHORTCUT: looks at the first three points only
     if len(points) >= 3:
-        (ax, ay), (bx, by), (cx, cy) = points[:3]
-        if (bx - ax) * (cy - ay) == (by - ay) * (cx - ax):
+        (ax, ay), (bx, by), (cx, cy) = [(Fraction(x), Fraction(y)) for x, y in points[:3]]
+        if (bx - ax) * (cy - ay) == (by - ay) * (cx - ax):  # exact: only the prefix idea is wrong
             return []
     return _delaunay(points)
 

@@ -3,6 +3,8 @@
 The shortcut: "with at most three live nodes, everyone is everyone's neighbour". Three nodes on a
 line are not: the middle one separates the ends.
 
+Killed by: exhaustive
+
 It is `accepted_local.py` with one change, marked `SHORTCUT` below; `python -m grader stress dynamic-network wrong_small_all_linked.py`
 finds an input that shows it. Function mode: the grader calls process(operations). Stdio mode / Kattis:
 python3 wrong_small_all_linked.py < input

@@ -4,6 +4,8 @@ The shortcut: "with four points or fewer there is nothing to flip". Two triangle
 quadrilateral share a diagonal, and it is the wrong one when the fourth corner lies inside the
 circle of the other three.
 
+Killed by: exhaustive
+
 It is `accepted_lawson.py` with one change, marked `SHORTCUT` below; `python -m grader stress edge-flip wrong_small_no_flips.py`
 finds an input that shows it. Function mode: the grader calls flip_to_delaunay(points, triangles). Stdio mode / Kattis:
 python3 wrong_small_no_flips.py < input

@@ -4,6 +4,8 @@ The shortcut: collinear input is a chain in x order, so the sort key is the x co
 vertical line every x is the same and the chain keeps the input order: (0, 0), (0, 2), (0, 1)
 gives the edges 0-2 and 2-1 of length 3 instead of 2.
 
+Killed by: exhaustive
+
 It is `accepted_kruskal.py` with one change, marked `SHORTCUT` below; `python -m grader stress emst wrong_collinear_sort_x.py`
 finds an input that shows it. Function mode: the grader calls euclidean_mst(points). Stdio mode / Kattis:
 python3 wrong_collinear_sort_x.py < input

@@ -4,6 +4,8 @@ The shortcut: "three points: their circumcircle". Right for an acute or a right 
 the circumcentre of an obtuse triangle lies outside it, that is outside the hull, where the
 centre may not be.
 
+Killed by: exhaustive
+
 It is `accepted_toussaint.py` with one change, marked `SHORTCUT` below; `python -m grader stress largest-empty-circle wrong_three_points.py`
 finds an input that shows it. Function mode: the grader calls largest_empty_circle(points). Stdio mode / Kattis:
 python3 wrong_three_points.py < input

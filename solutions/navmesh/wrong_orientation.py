@@ -5,6 +5,8 @@ The shortcut: the statement's example rings are counter-clockwise, so the rings 
 with the free space on their left. The statement allows either orientation: a clockwise boundary
 or a hole given counter-clockwise puts the reflex corners on the wrong side.
 
+Killed by: exhaustive
+
 It is `accepted_visibility.py` with one change, marked `SHORTCUT` below; `python -m grader stress navmesh wrong_orientation.py`
 finds an input that shows it. Function mode: the grader calls shortest_path(boundary, holes, start, goal). Stdio mode / Kattis:
 python3 wrong_orientation.py < input

@@ -3,6 +3,8 @@
 The shortcut: "when start and goal coincide the path is [start]", answered before asking whether
 that point is in the free space at all. Outside the room or inside a hole the answer is None.
 
+Killed by: exhaustive
+
 It is `accepted_visibility.py` with one change, marked `SHORTCUT` below; `python -m grader stress navmesh wrong_start_is_goal.py`
 finds an input that shows it. Function mode: the grader calls shortest_path(boundary, holes, start, goal). Stdio mode / Kattis:
 python3 wrong_start_is_goal.py < input

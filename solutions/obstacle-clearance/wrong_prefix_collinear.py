@@ -4,6 +4,8 @@ Among collinear obstacles a disk can always go round, so the answer is the clear
 goal. The shortcut: "the first three obstacles are collinear, so all are" -- a goal inside a
 triangle of obstacles whose first three points happen to lie on a line is then too generous.
 
+Killed by: exhaustive
+
 It is `accepted_delaunay.py` with one change, marked `SHORTCUT` below; `python -m grader stress obstacle-clearance wrong_prefix_collinear.py`
 finds an input that shows it. Function mode: the grader calls max_clearance(points, start, goal). Stdio mode / Kattis:
 python3 wrong_prefix_collinear.py < input
@@ -228,13 +230,15 @@ def main():
     print(repr(max_clearance(pts, vals[2 * n:2 * n + 2], vals[2 * n + 2:2 * n + 4])))
 
 
+from fractions import Fraction  # noqa: E402
+
 _max_clearance = max_clearance
 
 
 def max_clearance(points, start, goal):  # SHORTCUT: looks at the first three obstacles only
     if len(points) >= 3:
-        (ax, ay), (bx, by), (cx, cy) = points[:3]
-        if (bx - ax) * (cy - ay) == (by - ay) * (cx - ax):
+        (ax, ay), (bx, by), (cx, cy) = [(Fraction(x), Fraction(y)) for x, y in points[:3]]
+        if (bx - ax) * (cy - ay) == (by - ay) * (cx - ax):  # exact: only the prefix idea is wrong
             return min(math.dist(q, p) for q in (start, goal) for p in points)
     return _max_clearance(points, start, goal)
 

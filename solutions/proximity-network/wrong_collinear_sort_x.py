@@ -3,6 +3,8 @@
 The shortcut: the Gabriel graph of collinear points is the chain in x order. On a vertical line
 every x is the same and the chain keeps the input order, linking points that are not neighbours.
 
+Killed by: exhaustive
+
 It is `accepted_delaunay.py` with one change, marked `SHORTCUT` below; `python -m grader stress proximity-network wrong_collinear_sort_x.py`
 finds an input that shows it. Function mode: the grader calls gabriel_graph(points). Stdio mode / Kattis:
 python3 wrong_collinear_sort_x.py < input

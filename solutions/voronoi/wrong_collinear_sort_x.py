@@ -3,6 +3,8 @@
 The shortcut: collinear sites are clipped by their neighbours in x order. On a vertical line every
 x is the same, so the neighbours are those in input order and the cells overlap.
 
+Killed by: exhaustive
+
 It is `accepted_clip.py` with one change, marked `SHORTCUT` below; `python -m grader stress voronoi wrong_collinear_sort_x.py`
 finds an input that shows it. Function mode: the grader calls voronoi_cells(points, bbox). Stdio mode / Kattis:
 python3 wrong_collinear_sort_x.py < input

@@ -1,11 +1,14 @@
-"""Wrong solution for `delaunay` (WA; killed by `exhaustive`): special-cases n = 3.
+"""Wrong solution for `delaunay` (WA; killed by `exhaustive`): special-cases four points.
 
-The shortcut: "three points are one triangle", oriented counter-clockwise by the sign of its area.
-Three collinear points, or two copies of one point and another, have no triangle.
+The shortcut: "four points in convex position: cut the quadrilateral along the diagonal through
+the first point". Right for a square (either diagonal is Delaunay) and whenever the Delaunay
+diagonal happens to touch point 0; wrong for a kite whose short diagonal avoids it.
 
-It is `accepted_walk.py` with one change, marked `SHORTCUT` below; `python -m grader stress delaunay wrong_three_points.py`
+Killed by: exhaustive
+
+It is `accepted_walk.py` with one change, marked `SHORTCUT` below; `python -m grader stress delaunay wrong_quad_diagonal.py`
 finds an input that shows it. Function mode: the grader calls delaunay(points). Stdio mode / Kattis:
-python3 wrong_three_points.py < input
+python3 wrong_quad_diagonal.py < input
 """
 import sys
 
@@ -177,11 +180,17 @@ def main():
 _delaunay = delaunay
 
 
-def delaunay(points):  # SHORTCUT: three points are always one triangle
-    if len(points) == 3:
-        (ax, ay), (bx, by), (cx, cy) = points
-        return [[0, 1, 2]] if (bx - ax) * (cy - ay) - (by - ay) * (cx - ax) >= 0 else [[0, 2, 1]]
-    return _delaunay(points)
+def delaunay(points):  # SHORTCUT: a convex quadrilateral is cut along the diagonal through point 0
+    tris = _delaunay(points)
+    if len(points) == 4 and len(tris) == 2:
+        (a, b, c), t2 = tris
+        d = next(v for v in t2 if v not in (a, b, c))
+        shared = [v for v in (a, b, c) if v in t2]
+        if 0 not in shared:                      # the other diagonal, apex-d, goes through 0
+            k = next(i for i, v in enumerate((a, b, c)) if v not in shared)
+            apex, nxt, prv = (a, b, c)[k], (a, b, c)[(k + 1) % 3], (a, b, c)[(k + 2) % 3]
+            return [[apex, nxt, d], [apex, d, prv]]  # the quadrilateral, ccw: apex, nxt, d, prv
+    return tris
 
 
 if __name__ == "__main__":
