@@ -190,5 +190,8 @@ def delaunay(points):  # SHORTCUT: looks at the first three points only
     return _delaunay(points)
 
 
+bowyer_watson = delaunay  # the entry of bowyer-watson-timed
+
+
 if __name__ == "__main__":
     main()

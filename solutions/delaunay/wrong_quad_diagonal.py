@@ -2,7 +2,8 @@
 
 The shortcut: "four points in convex position: cut the quadrilateral along the diagonal through
 the first point". Right for a square (either diagonal is Delaunay) and whenever the Delaunay
-diagonal happens to touch point 0; wrong for a kite whose short diagonal avoids it.
+diagonal happens to touch point 0; wrong for a kite whose short diagonal avoids it, and for three
+collinear points and one off their line, which also give two triangles.
 
 Killed by: exhaustive
 
@@ -191,6 +192,9 @@ def delaunay(points):  # SHORTCUT: a convex quadrilateral is cut along the diago
             apex, nxt, prv = (a, b, c)[k], (a, b, c)[(k + 1) % 3], (a, b, c)[(k + 2) % 3]
             return [[apex, nxt, d], [apex, d, prv]]  # the quadrilateral, ccw: apex, nxt, d, prv
     return tris
+
+
+bowyer_watson = delaunay  # the entry of bowyer-watson-timed
 
 
 if __name__ == "__main__":
