@@ -5,8 +5,9 @@ test input):
 
 * ``solve``: the reference answer's time (``generators/generator.py`` ``solve``, best of 3 after
   one warm-up on the first test, so numba compilation is not counted), the slowest test of the group;
-* ``accepted``: the accepted solution (the first ``AC`` in ``solutions/<id>/expected.yaml``)
-  judged in the sandbox, its CPU time on the slowest test of that group;
+* ``accepted``: each accepted solution (every ``AC`` in ``solutions/<id>/expected.yaml``)
+  judged in the sandbox, its CPU time on the slowest test of that group, and its CPU time summed
+  over the ``exhaustive`` group;
 * ``limit``: the time limit per test (``problem.yaml``) and limit / accepted.
 
 Run: .venv/bin/python benchmarks/bench_problems.py [delaunay emst ...] [--markdown]
@@ -48,14 +49,18 @@ def solve_time(p: Problem, group: str, repeats: int = 3) -> float:
     return worst
 
 
-def accepted_time(p: Problem, group: str) -> tuple[str, float, str]:
-    """(file, slowest CPU time in ``group``, overall verdict) of the accepted solution, judged."""
-    name = next((f for f, v in expected_verdicts(p.id).items() if v == "AC"), None)
-    if name is None:
-        return "-", float("nan"), "-"
-    result = Judge(p).judge_path(REPO / "solutions" / p.id / name)
-    times = [t.time_s for t in result.tests if t.group == group]
-    return name, max(times, default=float("nan")), str(result.verdict)
+def accepted_times(p: Problem, group: str) -> list[tuple[str, float, float, str]]:
+    """Per accepted solution of ``expected.yaml``, judged: (file, slowest CPU time in ``group``,
+    total CPU time of the ``exhaustive`` group, overall verdict)."""
+    rows = []
+    for name in [f for f, v in expected_verdicts(p.id).items() if v == "AC"] or ["-"]:
+        if name == "-":
+            return [("-", float("nan"), float("nan"), "-")]
+        result = Judge(p).judge_path(REPO / "solutions" / p.id / name, follow_links=True)
+        times = [t.time_s for t in result.tests if t.group == group]
+        small = sum(t.time_s for t in result.tests if t.group == "exhaustive")
+        rows.append((name, max(times, default=float("nan")), small, str(result.verdict)))
+    return rows
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -68,18 +73,18 @@ def main(argv: list[str] | None = None) -> int:
     for p in problems:
         group = largest_group(p)
         solve = solve_time(p, group)
-        name, acc, verdict = accepted_time(p, group)
-        rows.append((p.id, group, solve, name, acc, verdict, p.time_limit))
-        if not a.markdown:
-            print(f"{p.id:22} group {group:10} solve {solve:7.3f} s   {name:24} {verdict:3} {acc:7.3f} s   "
-                  f"limit {p.time_limit:g} s ({p.time_limit / acc:.0f}x)", flush=True)
+        for name, acc, small, verdict in accepted_times(p, group):
+            rows.append((p.id, group, solve, name, acc, small, verdict, p.time_limit))
+            if not a.markdown:
+                print(f"{p.id:22} group {group:10} solve {solve:7.3f} s   {name:24} {verdict:3} {acc:7.3f} s   "
+                      f"exhaustive {small:6.3f} s   limit {p.time_limit:g} s ({p.time_limit / acc:.0f}x)", flush=True)
     if a.markdown:
-        print("| problem | largest group | reference solve (s) | accepted solution | accepted (s, CPU) | time limit (s) |")
-        print("| --- | --- | --- | --- | --- | --- |")
-        for pid, group, solve, name, acc, verdict, limit in rows:
-            print(f"| `{pid}` | {group} | {solve:.3f} | `{name}` ({verdict}) | {acc:.3f} | {limit:g} |")
+        print("| problem | largest group | reference solve (s) | accepted solution | accepted (s, CPU) "
+              "| exhaustive group (s, CPU in all) | time limit (s) |")
+        print("| --- | --- | --- | --- | --- | --- | --- |")
+        for pid, group, solve, name, acc, small, verdict, limit in rows:
+            print(f"| `{pid}` | {group} | {solve:.3f} | `{name}` ({verdict}) | {acc:.3f} | {small:.3f} | {limit:g} |")
     return 0
-
 
 if __name__ == "__main__":
     sys.exit(main())

@@ -12,11 +12,13 @@
     python -m grader export-kattis PROBLEM OUTDIR [--groups g1,g2] [--no-judge]
     python -m grader validate PROBLEM
     python -m grader statements [--check] [PROBLEM...]
+    python -m grader stress PROBLEM FILE [--seconds N]
 
 Exit status (for scripts and the CI of students' own repositories):
     0  success; for ``judge`` and ``timed submit``: the verdict is AC
     1  ``judge``/``timed submit``: any verdict but AC; ``validate``: the package has problems;
-       ``statements --check``: a statement is stale or lacks its generated block
+       ``statements --check``: a statement is stale or lacks its generated block; ``stress``:
+       a failing input was found (it is printed)
     2  bad usage or input: unknown problem, missing file or folder, a results store that does
        not exist (commands that only read a store never create one), with a one-line message
 A closed output pipe (``python -m grader list | head -1``) ends the command quietly.
@@ -78,6 +80,12 @@ def judged_in() -> str:
     if mech == "trusted":
         return "judged in the trusted mode: NO kernel jail (for your own code only; see python -m grader.sandbox)"
     return f"judged in the jail: {mech}"
+
+
+def _cmd_stress(a: argparse.Namespace) -> int:
+    from .stress import main as stress_main
+
+    return stress_main(a.problem, a.file, a.seconds)
 
 
 def _cmd_grade(a: argparse.Namespace) -> int:
@@ -261,6 +269,11 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("problems", nargs="*", help="problem ids (default: every problem)")
     p.add_argument("--check", action="store_true", help="only report stale statements (exit 1 if any)")
     p.set_defaults(func=_cmd_statements)
+    p = sub.add_parser("stress", help="search small inputs for one that FILE gets wrong")
+    p.add_argument("problem")
+    p.add_argument("file")
+    p.add_argument("--seconds", type=float, default=10.0, help="how long to search (default 10)")
+    p.set_defaults(func=_cmd_stress)
     return ap
 
 

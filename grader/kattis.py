@@ -48,13 +48,23 @@ def shortname(problem_id: str) -> str:
     return name
 
 
-def expected_verdicts(problem_id: str) -> dict[str, str]:
-    """``solutions/<problem>/expected.yaml``: file name -> expected verdict."""
+def _expected(problem_id: str) -> dict[str, list[str]]:
     f = REPO / "solutions" / problem_id / "expected.yaml"
     if not f.is_file():
         return {}
     data = yaml.safe_load(f.read_text()) or {}
-    return {str(k): str(v) for k, v in data.items()}
+    return {str(k): str(v).split() for k, v in data.items()}
+
+
+def expected_verdicts(problem_id: str) -> dict[str, str]:
+    """``solutions/<problem>/expected.yaml``: file name -> expected verdict (a value may name,
+    after the verdict, the scored group that must kill the file: ``WA exhaustive``)."""
+    return {k: v[0] for k, v in _expected(problem_id).items()}
+
+
+def killing_groups(problem_id: str) -> dict[str, str]:
+    """The files of ``expected.yaml`` that name a group that must kill them: file -> group."""
+    return {k: v[1] for k, v in _expected(problem_id).items() if len(v) > 1}
 
 
 def scored_groups(p: Problem, groups: list[str] | None = None) -> list[tuple[Group, int | None]]:

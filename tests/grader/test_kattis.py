@@ -115,13 +115,13 @@ def test_export_writes_scored_groups(tmp_path):
 
     dest = export("delaunay", tmp_path, groups=["tiny", "large:1"], judge=False)
     secret = dest / "data" / "secret"
-    assert sorted(d.name for d in secret.iterdir() if d.is_dir()) == ["01-tiny", "04-large"]
+    assert sorted(d.name for d in secret.iterdir() if d.is_dir()) == ["01-tiny", "05-large"]
     tiny_cases = len(next(g for g in load_problem("delaunay").groups if g.name == "tiny").cases)
-    assert len(list((secret / "01-tiny").glob("*.in"))) == tiny_cases and len(list((secret / "04-large").glob("*.in"))) == 1
+    assert len(list((secret / "01-tiny").glob("*.in"))) == tiny_cases and len(list((secret / "05-large").glob("*.in"))) == 1
     tiny = yaml.safe_load((secret / "01-tiny" / "testdata.yaml").read_text())
-    assert tiny == {"on_reject": "break", "grader_flags": "min", "accept_score": 20, "range": "0 20"}
+    assert tiny == {"on_reject": "break", "grader_flags": "min", "accept_score": 15, "range": "0 15"}
     top = yaml.safe_load((secret / "testdata.yaml").read_text())
-    assert "accept_if_any_accepted" in top["grader_flags"] and top["range"] == "0 50"
+    assert "accept_if_any_accepted" in top["grader_flags"] and top["range"] == "0 45"
     assert yaml.safe_load((dest / "problem.yaml").read_text())["type"] == "scoring"
     with pytest.raises(ValueError, match="positive integer"):
         export("delaunay", tmp_path, groups=["large:0"])

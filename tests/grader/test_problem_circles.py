@@ -216,7 +216,7 @@ def test_voronoi_types_and_sizes_are_strict():
     for bad in (ref[:3], ref + [ref[0]], "cells", None, [ref[0], ref[1], ref[2], [[1.0, 2.0, 3.0]]],
                 [ref[0], ref[1], ref[2], [[True, 1.0], [2.0, 2.0], [0.0, 3.0]]],
                 [ref[0], ref[1], ref[2], [[math.nan, 1.0], [2.0, 2.0], [0.0, 3.0]]],
-                [ref[0], ref[1], ref[2], [[0.0, 0.0]] * 20]):
+                [ref[0], ref[1], ref[2], [[0.0, 0.0]] * (chk.max_vertices(4)[0] + 1)]):   # over the stated bound
         with pytest.raises(chk.PresentationError):
             chk.from_result(bad, TUT)
     for bad in ("", "3 0 0 1 0\n" * 4, "x\n" * 4, "1 0 0\n"):

@@ -55,9 +55,11 @@ def write_output(cells: list) -> str:
 
 
 def max_vertices(n: int) -> tuple[int, int]:
-    """Bounds on a correct answer's size: vertices per cell, and in all (Voronoi: < 3n vertices,
-    each in at most 3 cells, plus the box corners and box crossings)."""
-    return n + 8, 10 * n + 16
+    """Bounds on an answer's size, as the statement states them: vertices per cell, and in all.
+    A correct answer needs at most n + 8 and 10n + 16 (Voronoi: < 3n vertices, each in at most 3
+    cells, plus the box corners and box crossings); the bounds are twice that, so an extra vertex
+    in the middle of every edge (which the statement allows) fits."""
+    return 2 * n + 16, 20 * n + 32
 
 
 def _number(v, where: str) -> float:
@@ -85,7 +87,8 @@ def from_result(value, args: list) -> list:
     if not isinstance(value, list):
         raise PresentationError(f"expected a list of cells (polygons), got {type(value).__name__}: {show(value, 60)}")
     for i, cell in enumerate(value[:len(points) + 1]):
-        if not isinstance(cell, list) or not all(isinstance(p, list) and len(p) == 2 for p in cell[:len(points) + 9]):
+        if not isinstance(cell, list) or not all(isinstance(p, list) and len(p) == 2
+                                                 for p in cell[:max_vertices(len(points))[0] + 1]):
             raise PresentationError(f"cell {i} should be a list of [x, y] vertices, got {show(cell, 60)}")
     return _cells(value, len(points))
 

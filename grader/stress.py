@@ -1,0 +1,221 @@
+"""``python -m grader stress PROBLEM FILE [--seconds N]``: find a small input that FILE gets wrong.
+
+The tool competitive programmers use to find their bug. Inputs come smallest first: the problem's
+``exhaustive`` group (every configuration of a few lattice points, :mod:`grader.smallcases`, and
+the group's hand-made cases), then
+random small inputs that grow with time. Each input is checked by the problem's input validators,
+answered by the reference (the generator's ``solve``), and FILE's answer is judged in the sandbox
+by the problem's checker, many inputs per sandboxed run. At the first failure the input is shrunk
+(points, holes or operations dropped one at a time while it still fails) and the smallest failing
+input is printed with its verdict; the exit status is 1. When nothing fails in the time given the
+exit status is 0.
+
+Example (the zoo solution that orders collinear points by x alone):
+
+    python -m grader stress emst solutions/emst/wrong_collinear_sort_x.py --seconds 20
+"""
+from __future__ import annotations
+
+import contextlib
+import io
+import random
+import runpy
+import sys
+import time
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Callable, Iterator
+
+from . import smallcases
+from .judge import Judge
+from .problems import Problem, TestCase, load_problem
+from .submissions import Submission
+from .verdicts import Verdict
+
+BATCH = 48  # inputs per sandboxed run
+
+
+@dataclass
+class Failure:
+    """The smallest failing input found: its generator case, input text, verdict and message."""
+
+    case: dict
+    input_text: str
+    verdict: str
+    message: str
+    tried: int
+
+
+def _valid(problem: Problem, text: str) -> bool:
+    """The problem's input validators accept ``text`` (run in this process: exit 42 = valid)."""
+    for v in problem.input_validators():
+        before = set(sys.modules)
+        old_argv, old_stdin, old_path = sys.argv, sys.stdin, list(sys.path)
+        sys.argv, sys.stdin = [str(v)], io.StringIO(text)
+        sys.path.insert(0, str(v.parent))
+        code: object = 0
+        try:
+            with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(io.StringIO()):
+                runpy.run_path(str(v), run_name="__main__")
+        except SystemExit as exc:
+            code = exc.code
+        except Exception:
+            code = 1
+        finally:
+            sys.argv, sys.stdin, sys.path[:] = old_argv, old_stdin, old_path
+            for name in set(sys.modules) - before:  # validators of other problems share module names
+                del sys.modules[name]
+        if code != 42:
+            return False
+    return True
+
+
+def _test(problem: Problem, case: dict, name: str) -> TestCase | None:
+    """The test of one case (None when the case is not a valid input of the problem)."""
+    try:
+        args = problem.generate_args(case, 0)
+        text = problem.checker.write_input(args)
+        if not _valid(problem, text):
+            return None
+        answer = problem.checker.write_output(problem.generator.solve(*args))
+    except Exception:  # a random case the generator or the reference refuses: not an input
+        return None
+    return TestCase(name, "stress", text, answer)
+
+
+def _random_points(rng: random.Random, n: int, span: int, dim: int = 2) -> list[list[int]]:
+    return [[rng.randint(0, span) for _ in range(dim)] for _ in range(n)]
+
+
+def random_case(problem_id: str, rng: random.Random, size: int) -> dict:
+    """A random small case of ``problem_id`` with about ``size`` elements (integer coordinates)."""
+    n, span = rng.randint(1, size), rng.choice((2, 3, 4, 6, 10))
+    if problem_id == "navmesh":
+        room = dict(rng.choice(smallcases.cases_for("navmesh")))
+        room["holes"] = [h for h in room["holes"] if rng.random() < 0.7]
+        spot = [[rng.randint(-2, 10) / 2, rng.randint(-2, 10) / 2] for _ in range(2)]
+        return {**room, "start": spot[0], "goal": spot[rng.randrange(2)]}
+    if problem_id == "dynamic-network":
+        ops: list = []
+        joined = 0
+        for _ in range(2 * n + 2):
+            r = rng.random()
+            if r < 0.45 or not joined:
+                ops.append(["join", float(rng.randint(0, span)), float(rng.randint(0, span))])
+                joined += 1
+            elif r < 0.6:
+                ops.append(["fail", rng.randrange(joined + 1)])
+            elif r < 0.95:
+                ops.append(["neighbors", rng.randrange(joined + 1)])
+            else:
+                ops.append(["count"])
+        return {"kind": "ops", "operations": ops}
+    if problem_id == "delaunay-3d":
+        return {"kind": "points", "points": _random_points(rng, n + 3, min(span, 3), dim=3), "shuffle": False}
+    pts = _random_points(rng, n + (2 if problem_id in ("closest-pair", "largest-empty-circle") else 0), span)
+    case: dict = {"kind": "points", "points": pts, "shuffle": False}
+    if problem_id == "edge-flip":
+        case["start"] = "sweep"
+    elif problem_id == "voronoi":
+        m = rng.choice((0, 1))
+        case["box"] = [-m, -m, span + m, span + m]
+    elif problem_id == "obstacle-clearance":
+        case["start"], case["goal"] = ([rng.randint(-2, 2 * span + 2) / 2, rng.randint(-2, 2 * span + 2) / 2]
+                                       for _ in range(2))
+    return case
+
+
+def candidates(case: dict) -> Iterator[dict]:
+    """Smaller variants of ``case``: a run of points, holes or operations dropped, halves first
+    and single elements last (so a long failing input shrinks in few rounds)."""
+    for key in ("points", "holes", "operations"):
+        items = case.get(key)
+        if not isinstance(items, list) or len(items) <= (1 if key == "points" else 0):
+            continue
+        size = len(items) // 2
+        while size >= 1:
+            for i in range(0, len(items), size):
+                rest = items[:i] + items[i + size:]
+                if rest or key != "points":
+                    yield {**case, key: rest}
+            size //= 2
+
+
+class _Runner:
+    """Judges lists of cases with the submission, many per sandboxed run, stopping at the first
+    failure."""
+
+    def __init__(self, problem: Problem, path: Path):
+        self.problem = problem
+        problem.__dict__["_tests"] = []            # no hidden tests: ours are set per batch
+        self.judge = Judge(problem, hide=[str(path.resolve().parent)], stop_at_first_failure=True)
+        self.sub = Submission.from_path(path, follow_links=True)
+        self.tried = 0
+
+    def first_failure(self, cases: list[dict]) -> tuple[dict, TestCase, str, str] | None:
+        tests, kept = [], []
+        for case in cases:
+            t = _test(self.problem, case, f"stress/{self.tried + len(tests) + 1}")
+            if t is not None:
+                tests.append(t)
+                kept.append(case)
+        if not tests:
+            return None
+        j = self.judge
+        j.tests, j._args, j._answers = tests, [None] * len(tests), [None] * len(tests)
+        result = j.judge(self.sub, str(self.sub.filename))
+        for case, t, r in zip(kept, tests, result.tests):
+            if r.verdict not in (Verdict.AC, Verdict.SKIPPED, Verdict.JE):
+                self.tried += tests.index(t) + 1
+                return case, t, str(r.verdict), r.message
+        self.tried += len(tests)
+        return None
+
+
+def stress(problem_id: str, path: str | Path, seconds: float = 10.0, seed: int = 1,
+           log: Callable[[str], None] = lambda s: None) -> Failure | None:
+    """Search for a failing input of ``path`` on ``problem_id`` for about ``seconds``; the
+    smallest failure found (shrunk), or None."""
+    problem = load_problem(problem_id)
+    if problem.generator_path is None or not problem.generator_path.is_file():
+        raise ValueError(f"problem {problem_id!r}: stress needs the problem's generator (the reference answers)")
+    path = Path(path)
+    if not path.is_file():
+        raise ValueError(f"submission file {path} does not exist")
+    runner = _Runner(problem, path)
+    deadline = time.monotonic() + seconds
+    rng = random.Random(seed)
+    group = [g.cases for g in problem.groups if g.name == "exhaustive"]  # with its hand-made cases
+    pending = list(group[0] if group else smallcases.cases_for(problem_id))
+    found = None
+    size = 2
+    while found is None and time.monotonic() < deadline:
+        if not pending:  # the lattice is done: random inputs, growing
+            pending = [random_case(problem_id, rng, size) for _ in range(BATCH)]
+            size = min(size + 1, 40)
+        batch, pending = pending[:BATCH], pending[BATCH:]
+        found = runner.first_failure(batch)
+    if found is None:
+        return None
+    case, test, verdict, message = found
+    log(f"failure after {runner.tried} inputs; shrinking")
+    while True:
+        smaller = runner.first_failure(list(candidates(case)))
+        if smaller is None:
+            break
+        case, test, verdict, message = smaller
+    return Failure(case, test.input_text, verdict, message, runner.tried)
+
+
+def main(problem_id: str, file: str, seconds: float) -> int:
+    """The ``stress`` command: print the smallest failing input (exit 1) or that none was found."""
+    t0 = time.monotonic()
+    failure = stress(problem_id, file, seconds, log=lambda s: print(s, file=sys.stderr))
+    if failure is None:
+        print(f"no failing input found in {time.monotonic() - t0:.1f} s")
+        return 0
+    print(f"{failure.verdict} on this input (found and shrunk in {time.monotonic() - t0:.1f} s, "
+          f"{failure.tried} inputs judged):\n")
+    print(failure.input_text.rstrip("\n"))
+    print(f"\n{failure.verdict}: {failure.message}")
+    return 1

@@ -1,0 +1,198 @@
+"""Wrong solution for `emst` (WA; killed by `exhaustive`): orders collinear points by x alone.
+
+The shortcut: collinear input is a chain in x order, so the sort key is the x coordinate. On a
+vertical line every x is the same and the chain keeps the input order: (0, 0), (0, 2), (0, 1)
+gives the edges 0-2 and 2-1 of length 3 instead of 2.
+
+Killed by: exhaustive
+
+It is `accepted_kruskal.py` with one change, marked `SHORTCUT` below; `python -m grader stress emst wrong_collinear_sort_x.py`
+finds an input that shows it. Function mode: the grader calls euclidean_mst(points). Stdio mode / Kattis:
+python3 wrong_collinear_sort_x.py < input
+"""
+import sys
+
+INF = -1  # the infinite vertex of ghost triangles
+
+
+def exact(points):
+    """Scale all coordinates by one power of two so that they become Python ints (exact)."""
+    ratios = [(float(x).as_integer_ratio(), float(y).as_integer_ratio()) for x, y in points]
+    den = max([1] + [max(dx, dy) for (_, dx), (_, dy) in ratios])
+    return [(nx * (den // dx), ny * (den // dy)) for (nx, dx), (ny, dy) in ratios]
+
+
+def orient(a, b, c):
+    d = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+    return (d > 0) - (d < 0)
+
+
+def incircle(a, b, c, d):
+    adx, ady = a[0] - d[0], a[1] - d[1]
+    bdx, bdy = b[0] - d[0], b[1] - d[1]
+    cdx, cdy = c[0] - d[0], c[1] - d[1]
+    det = ((adx * adx + ady * ady) * (bdx * cdy - cdx * bdy) - (bdx * bdx + bdy * bdy) * (adx * cdy - cdx * ady)
+           + (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady))
+    return (det > 0) - (det < 0)
+
+
+def hilbert_order(P, idx):
+    if not idx:
+        return []
+    xs = [P[i][0] for i in idx]
+    ys = [P[i][1] for i in idx]
+    x0, y0 = min(xs), min(ys)
+    span = max(max(xs) - x0, max(ys) - y0) or 1
+    side = 1 << 16
+
+    def key(i):
+        x = (P[i][0] - x0) * (side - 1) // span
+        y = (P[i][1] - y0) * (side - 1) // span
+        d, s = 0, side >> 1
+        while s:
+            rx = 1 if x & s else 0
+            ry = 1 if y & s else 0
+            d += s * s * ((3 * rx) ^ ry)
+            if ry == 0:
+                if rx == 1:
+                    x, y = side - 1 - x, side - 1 - y
+                x, y = y, x
+            s >>= 1
+        return d
+
+    return sorted(idx, key=key)
+
+
+def delaunay_edges(P, distinct):
+    """Undirected Delaunay edges of the distinct points (at least 3, not all collinear)."""
+    a = distinct[0]
+    b = distinct[1]
+    c = next(i for i in distinct[2:] if orient(P[a], P[b], P[i]) != 0)
+    if orient(P[a], P[b], P[c]) < 0:
+        b, c = c, b
+    tri_of = {}  # directed edge (u, v) -> third vertex w of the triangle (u, v, w), CCW
+
+    def add(u, v, w):
+        tri_of[(u, v)] = w
+        tri_of[(v, w)] = u
+        tri_of[(w, u)] = v
+
+    def remove(u, v, w):
+        del tri_of[(u, v)], tri_of[(v, w)], tri_of[(w, u)]
+
+    add(a, b, c)
+    add(b, a, INF)
+    add(c, b, INF)
+    add(a, c, INF)
+
+    def conflict(u, v, w, p):
+        if w == INF:
+            return in_ghost(u, v, p)
+        if u == INF:
+            return in_ghost(v, w, p)
+        if v == INF:
+            return in_ghost(w, u, p)
+        return incircle(P[u], P[v], P[w], P[p]) > 0
+
+    def in_ghost(u, v, p):  # ghost (u, v, INF): the real triangle is on the right of u->v
+        s = orient(P[u], P[v], P[p])
+        if s != 0:
+            return s > 0
+        pu, pv, pp = P[u], P[v], P[p]
+        return min(pu[0], pv[0]) <= pp[0] <= max(pu[0], pv[0]) and min(pu[1], pv[1]) <= pp[1] <= max(pu[1], pv[1])
+
+    last = (a, b)
+    for p in hilbert_order(P, [i for i in distinct if i not in (a, b, c)]):
+        # visibility walk to a triangle in conflict with p
+        u, v = last if last in tri_of else next(iter(tri_of))
+        w = tri_of[(u, v)]
+        if INF in (u, v, w):  # start from the real triangle next to this ghost
+            while w != INF:
+                u, v, w = v, w, u
+            u, v = v, u
+            w = tri_of[(u, v)]
+        pp = P[p]
+        while True:
+            if orient(P[u], P[v], pp) < 0:
+                u, v = v, u
+            elif orient(P[v], P[w], pp) < 0:
+                u, v = w, v
+            elif orient(P[w], P[u], pp) < 0:
+                u, v = u, w
+            else:
+                break
+            w = tri_of[(u, v)]
+            if w == INF:
+                break  # crossed the hull: p is outside, and this ghost conflicts with it
+        # grow the cavity from (u, v, w)
+        start = (u, v, w)
+        bad = {start}
+        stack = [start]
+        boundary = []
+        while stack:
+            t = stack.pop()
+            for x, y in ((t[0], t[1]), (t[1], t[2]), (t[2], t[0])):
+                z = tri_of.get((y, x))
+                nb = (y, x, z)
+                key = None
+                for rot in (nb, (x, z, y), (z, y, x)):
+                    if rot in bad:
+                        key = rot
+                        break
+                if key is not None:
+                    continue
+                if conflict(y, x, z, p):
+                    bad.add(nb)
+                    stack.append(nb)
+                else:
+                    boundary.append((x, y))
+        for t in bad:
+            remove(*t)
+        for x, y in boundary:
+            add(x, y, p)
+        last = boundary[0]
+    return {(u, v) if u < v else (v, u) for (u, v) in tri_of if u != INF and v != INF}
+
+
+def euclidean_mst(points):
+    P = exact(points)
+    first = {}
+    distinct = [i for i, p in enumerate(P) if first.setdefault(p, i) == i]
+    edges = [[first[p], i] for i, p in enumerate(P) if first[p] != i]  # zero-length edges
+    if len(distinct) < 2:
+        return edges
+    a, b = distinct[0], distinct[1]
+    if all(orient(P[a], P[b], P[i]) == 0 for i in distinct[2:]):
+        chain = sorted(distinct, key=lambda i: P[i][0])  # SHORTCUT: x alone
+        return edges + [[chain[k], chain[k + 1]] for k in range(len(chain) - 1)]
+
+    def length(e):
+        (x1, y1), (x2, y2) = P[e[0]], P[e[1]]
+        return (x1 - x2) ** 2 + (y1 - y2) ** 2
+
+    parent = {i: i for i in distinct}
+
+    def find(i):
+        while parent[i] != i:
+            parent[i] = parent[parent[i]]
+            i = parent[i]
+        return i
+
+    for u, v in sorted(delaunay_edges(P, distinct), key=length):
+        ru, rv = find(u), find(v)
+        if ru != rv:
+            parent[ru] = rv
+            edges.append([u, v])
+    return edges
+
+
+def main():
+    data = sys.stdin.buffer.read().split()
+    n = int(data[0])
+    pts = [(float(data[1 + 2 * i]), float(data[2 + 2 * i])) for i in range(n)]
+    edges = euclidean_mst(pts)
+    sys.stdout.write(f"{len(edges)}\n" + "".join(f"{u} {v}\n" for u, v in edges))
+
+
+if __name__ == "__main__":
+    main()
