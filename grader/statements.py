@@ -15,7 +15,7 @@ Run:
 
 Example:
     >>> from grader.problems import load_problem
-    >>> "| tiny | 20 |" in limits_block(load_problem("delaunay"))
+    >>> "| tiny | 15 |" in limits_block(load_problem("delaunay"))
     True
 """
 

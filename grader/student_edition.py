@@ -32,7 +32,8 @@ from .problems import REPO, list_problems
 
 PROBLEM_PARTS = ("problem.yaml", "statement", "data/sample", "input_validators", "output_validator")
 IGNORE = shutil.ignore_patterns("__pycache__", "*.pyc", "*.nbi", "*.nbc", ".ipynb_checkpoints", ".cache")
-INSTRUCTOR_ONLY = ("course_notebooks.py", "nbgrader_autograde.py", "student_edition.py")  # grader/ modules
+INSTRUCTOR_ONLY = ("course_notebooks.py", "nbgrader_autograde.py", "student_edition.py",  # grader/ modules
+                   "similarity.py", "similarity_report.py")
 PUBLIC_COURSE_KEYS = ("entry", "forbidden", "checker", "timed")
 
 README = """# Delaunay course: student edition

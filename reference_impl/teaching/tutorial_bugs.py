@@ -6,7 +6,7 @@ Run the examples:  python -m pytest reference_impl/teaching/tutorial_bugs.py
 Do not use this code to triangulate anything; use ``bowyer_watson`` (the
 teaching version) or ``Delaunay`` (the fast one).  ``naive_bowyer_watson``
 does what the tutorial's code does, written anew, mistakes included.  The
-mistakes are numbered as in lesson 04 and lesson 12 (and SPEC section 9):
+mistakes are numbered as in lesson 04 and lesson 12:
 
 1. triangles are never oriented, yet the in-circle determinant is read as
    "inside" when positive, which is only true for counter-clockwise triangles;

@@ -1,4 +1,4 @@
-"""nbgrader feedback of hidden groups holds none of the hidden inputs or answers (SPEC section 5).
+"""nbgrader feedback of hidden groups holds none of the hidden inputs or answers: hidden tests stay hidden from students.
 
 The feedback a student gets is the autograded notebook's test-cell outputs
 (:func:`grader.nbgrader_autograde.write_results`; ``generate_feedback`` renders them). Searched
