@@ -13,6 +13,7 @@ import os
 
 from nbgrader.preprocessors import AssignLatePenalties, CheckCellMetadata, LimitOutput, SaveAutoGrades
 
+from grader.course_notebooks import CODE_STUB
 from grader.nbgrader_autograde import CourseLatePolicy, JudgeCells
 
 c = get_config()  # noqa: F821 - provided by nbgrader when it loads this file
@@ -30,4 +31,4 @@ c.AssignLatePenalties.plugin_class = CourseLatePolicy
 c.LateSubmissionPlugin.penalty_method = "none"
 
 # what the student sees in place of the reference solution
-c.ClearSolutions.code_stub = {"python": "# YOUR CODE HERE\nraise NotImplementedError()"}
+c.ClearSolutions.code_stub = {"python": CODE_STUB}

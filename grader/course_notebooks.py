@@ -33,6 +33,10 @@ import yaml
 from .problems import Group, Problem, list_problems, load_problem, problems_root  # noqa: F401 (load_problem: the doctest)
 from .sample_check import is_sample_group
 
+#: What a student sees in place of a solution region (nbgrader's ``ClearSolutions.code_stub``,
+#: set from this in ``assignments/nbgrader_config.py``; the similarity report treats it as starter code).
+CODE_STUB = "# YOUR CODE HERE\nraise NotImplementedError()"
+
 SOLUTIONS = Path(__file__).resolve().parent.parent / "solutions"
 SOLUTION_ID = "solution"
 CHECK_ID = "check_samples"

@@ -44,6 +44,7 @@ from pathlib import Path
 import numpy as np
 
 from .classgrade import choose_submission, _student_dirs
+from .course_notebooks import CODE_STUB
 from .problems import load_problem, problems_root
 from .submissions import SubmissionError, notebook_code, read_submission_bytes
 from .text import clean
@@ -56,7 +57,7 @@ GUARANTEE_T = 30
 THRESHOLD = 0.5
 MIN_TOKENS = 100  #: shared filtered characters below which a pair is never flagged (tiny files)
 MAX_REFERENCE_FILES = 2000
-_NB_STUB = "# YOUR CODE HERE\nraise NotImplementedError()\n"
+_NB_STUB = CODE_STUB + "\n"   # the solution region and its closing newline become the stub
 _SOLUTION = re.compile(r"### BEGIN SOLUTION.*?### END SOLUTION\n?", re.S)
 _FENCED = re.compile(r"^(```|~~~)[^\n]*\n(.*?)^\1", re.S | re.M)
 _INLINE = re.compile(r"`([^`\n]+)`")
