@@ -1,0 +1,193 @@
+"""The theory lesson's code against independent oracles: the fast ``Delaunay``, ``ConstrainedDelaunay``,
+``delaunay_3d``, brute force and exact integer predicates.
+
+    .venv/bin/python -m pytest tests/teaching/test_theory.py -n 0 -q
+
+Covers reference_impl/teaching/{theory,locate,segment,cavity3d}.py (lesson 13).
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from scipy.spatial import ConvexHull
+
+from exact_oracle import canon
+from reference_impl import ConstrainedDelaunay, Delaunay, bowyer_watson, delaunay_3d
+from reference_impl.exact.verify import brute_force_empty_circles, check_delaunay, check_delaunay_3d
+from reference_impl.kit.player import scrambled_triangulation
+from reference_impl.teaching.cavity3d import cavity_3d, surface_counts
+from reference_impl.teaching.locate import BVH, HashGrid, KDTree, QuadTree, TriMesh
+from reference_impl.teaching.segment import insert_segment
+from reference_impl.teaching.theory import (all_triangulations, angle_vector, compare_angle_vectors, illegal_edges,
+                                            lawson, mean_star_size, new_triangles_per_insertion, star_sizes)
+
+
+def _sorted_tris(T) -> list[tuple[int, ...]]:
+    return sorted(tuple(sorted(t)) for t in np.asarray(T).tolist())
+
+
+# ----------------------------------------------------------------------------- backwards analysis
+@pytest.mark.parametrize("seed", range(3))
+def test_created_triangles_equal_the_new_points_star_in_the_prefix_triangulation(seed):
+    rng = np.random.default_rng(seed)
+    P = rng.random((120, 2))
+    created = new_triangles_per_insertion(P)
+    for k in (3, 10, 57, 120):           # the k-th point, inserted into the first k - 1
+        star = star_sizes(k, Delaunay(P[:k]).simplices)
+        assert created[k - 3] == star[k - 1]
+
+
+def test_mean_star_size_is_six_k_minus_six_minus_h_over_k():
+    rng = np.random.default_rng(4)
+    for k in (3, 4, 20, 300):
+        P = rng.random((k, 2))
+        d = Delaunay(P)
+        mean, h = mean_star_size(k, d.simplices)
+        assert h == len(ConvexHull(P).vertices)
+        assert mean * k == pytest.approx(6 * k - 6 - h)
+
+
+def test_backwards_analysis_average_over_which_point_is_last():
+    """Inserting each point last: the created counts average exactly (6k - 6 - h) / k."""
+    rng = np.random.default_rng(5)
+    k = 25
+    P = rng.random((k, 2))
+    counts = []
+    for last in range(k):
+        order = [i for i in range(k) if i != last] + [last]
+        counts.append(int(new_triangles_per_insertion(P, order)[-1]))
+    h = len(ConvexHull(P).vertices)
+    assert sum(counts) == 6 * k - 6 - h
+    assert counts == star_sizes(k, Delaunay(P).simplices).tolist()
+
+
+def test_new_triangles_bad_order():
+    with pytest.raises(ValueError, match="permutation"):
+        new_triangles_per_insertion([(0, 0), (1, 0), (0, 1)], [0, 0, 1])
+
+
+# ----------------------------------------------------------------------------- Lawson, lemma, angles
+@pytest.mark.parametrize("seed", range(3))
+def test_lawson_from_a_scrambled_triangulation_reaches_delaunay_and_each_flip_raises_the_angles(seed):
+    rng = np.random.default_rng(seed)
+    P = rng.random((60, 2))
+    start = scrambled_triangulation(P, flips=100, seed=seed)
+    assert illegal_edges(P, start)              # something to do
+    states = lawson(P, start)
+    assert len(states) > 1
+    final = states[-1]
+    assert illegal_edges(P, final) == []
+    assert check_delaunay(P, final)[0] and brute_force_empty_circles(P, final)[0]
+    assert _sorted_tris(final) == _sorted_tris(Delaunay(P).simplices)
+    vectors = [angle_vector(P, s) for s in states]
+    assert all(compare_angle_vectors(b, a) == 1 for a, b in zip(vectors, vectors[1:]))
+
+
+def test_illegal_edges_agree_with_brute_force_circles():
+    rng = np.random.default_rng(9)
+    P = rng.random((30, 2))
+    T = scrambled_triangulation(P, flips=20, seed=1)
+    assert bool(illegal_edges(P, T)) == (not brute_force_empty_circles(P, T)[0])
+
+
+def test_all_triangulations_counts_and_the_delaunay_maximum():
+    hexagon = [(math.cos(t), math.sin(t) * 0.9 + 0.01 * k) for k, t in enumerate(np.linspace(0, 2 * math.pi, 7)[:-1])]
+    assert len(all_triangulations(hexagon)) == 14           # Catalan(4): convex position
+    rng = np.random.default_rng(2)
+    P = rng.random((8, 2))
+    every = all_triangulations(P)
+    assert len({frozenset(canon(T)) for T in every}) == len(every)
+    assert all(len(T) == len(every[0]) for T in every)
+    dt = bowyer_watson(P)
+    best = max(every, key=lambda T: tuple(angle_vector(P, T)))
+    assert _sorted_tris(best) == _sorted_tris(dt)
+    assert all(compare_angle_vectors(angle_vector(P, dt), angle_vector(P, T)) >= 0 for T in every)
+    with pytest.raises(ValueError, match="more than 3"):
+        all_triangulations(P, limit=3)
+
+
+def test_angle_vector_of_a_right_triangle():
+    assert np.degrees(angle_vector([(0, 0), (2, 0), (0, 2)], [(0, 1, 2)])).round(9).tolist() == [45, 45, 90]
+
+
+# ----------------------------------------------------------------------------- point location
+def test_every_locator_finds_a_really_bad_triangle_and_the_true_nearest_vertex():
+    rng = np.random.default_rng(3)
+    P = np.r_[[(0, 0), (1, 0), (1, 1), (0, 1)], rng.random((400, 2))]
+    m = TriMesh(P, Delaunay(P).simplices)
+    structures = [KDTree(P), QuadTree(P), HashGrid(P)]
+    bvh = BVH(m)
+    start = 0
+    for q in rng.random((60, 2)):
+        brute = np.array([m.is_bad(t, q) for t in range(len(m.T))])
+        assert (m.bad_mask(q) == brute).all()
+        assert m.scan(q) == int(np.flatnonzero(brute)[0]) + 1
+        assert 1 <= m.walk(q, start) <= len(m.T)
+        t, _ = m.containing(q, start)
+        assert brute[t]
+        start = t
+        nearest = int(np.argmin(((P - q) ** 2).sum(axis=1)))
+        for s in structures:
+            assert s.nearest(q)[0] == nearest
+        assert 1 <= m.around_vertex(nearest, q) <= len(m.around[nearest])
+        tested, visited = bvh.first_bad(q)
+        assert 1 <= tested <= visited
+
+
+def test_walk_outside_the_hull_is_an_error():
+    m = TriMesh([(0, 0), (1, 0), (0, 1)], [(0, 1, 2)])
+    with pytest.raises(ValueError, match="outside the convex hull"):
+        m.containing((2, 2))
+
+
+# ----------------------------------------------------------------------------- segment insertion
+def test_segment_insertion_matches_constrained_delaunay():
+    rng = np.random.default_rng(0)
+    crossed = 0
+    for _ in range(80):
+        n = int(rng.integers(5, 50))
+        P = rng.random((n, 2))
+        a, b = (int(v) for v in rng.choice(n, 2, replace=False))
+        ins = insert_segment(P, bowyer_watson(P), a, b)
+        crossed += len(ins.crossed)
+        assert _sorted_tris(ins.triangles) == _sorted_tris(ConstrainedDelaunay(P, [(a, b)]).simplices)
+        assert len(ins.new) == len(ins.crossed)          # a polygon of k + 2 vertices has k triangles
+        assert len(ins.left) + len(ins.right) == len(ins.crossed)
+    assert crossed > 80
+
+
+def test_segment_through_a_vertex_is_refused_and_an_existing_edge_changes_nothing():
+    P = [(0, 0), (1, 0), (2, 0), (1, 1), (1, -1), (3, 0)]
+    T = bowyer_watson(P)
+    with pytest.raises(ValueError, match="passes through"):
+        insert_segment(P, T, 0, 5)
+    a, b = (int(v) for v in T[0][:2])
+    ins = insert_segment(P, T, a, b)
+    assert ins.crossed == [] and ins.new == [] and _sorted_tris(ins.triangles) == _sorted_tris(T)
+    with pytest.raises(ValueError, match="zero length"):
+        insert_segment(P, T, 1, 1)
+
+
+# ----------------------------------------------------------------------------- 3D cavity
+@pytest.mark.parametrize("seed", range(4))
+def test_cavity_3d_matches_delaunay_3d(seed):
+    rng = np.random.default_rng(seed)
+    P = rng.random((80, 3))
+    P2 = np.r_[P, [[0.5, 0.45, 0.55]]]
+    cav = cavity_3d(P2, delaunay_3d(P), 80)
+    assert _sorted_tris(cav.tetrahedra) == _sorted_tris(delaunay_3d(P2))
+    assert check_delaunay_3d(P2, cav.tetrahedra)[0]
+    V, E, F, closed = surface_counts(cav.boundary)
+    assert closed and V - E + F == 2 and F == 2 * V - 4
+    assert len(cav.new) == len(cav.boundary)
+
+
+def test_cavity_3d_bad_input():
+    pts = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1), (5, 5, 5)]
+    good = delaunay_3d(pts[:4])
+    with pytest.raises(ValueError, match="already a vertex"):
+        cavity_3d(pts, good, 0)
+    with pytest.raises(ValueError, match="not positively oriented"):
+        cavity_3d(pts, good[:, [1, 0, 2, 3]], 4)
