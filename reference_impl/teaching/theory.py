@@ -34,7 +34,7 @@ from reference_impl.exact.predicates import incircle, orient2d
 from reference_impl.teaching.bowyer_watson import Step, bowyer_watson
 from reference_impl.validate import as_points
 
-__all__ = ["new_triangles_per_insertion", "star_sizes", "mean_star_size", "illegal_edges", "lawson",
+__all__ = ["sweep_triangulation", "new_triangles_per_insertion", "star_sizes", "mean_star_size", "illegal_edges", "lawson",
            "angle_vector", "compare_angle_vectors", "all_triangulations", "flip_edge"]
 
 Tri = tuple[int, int, int]
@@ -126,6 +126,43 @@ def mean_star_size(n: int, triangles) -> tuple[float, int]:
 
 
 # ----------------------------------------------------------------------------- local Delaunay and Lawson
+def sweep_triangulation(points) -> np.ndarray:
+    """A triangulation that ignores circles: sweep the points by x, join each to the hull edges it sees.
+
+    Points are taken in (x, y) order; each new point lies outside the hull of
+    the earlier ones and is joined to every hull edge it sees (strictly).  The
+    result is a valid triangulation of the points, usually far from Delaunay
+    (long thin triangles).  Needs general position: three collinear points met
+    on the way raise ``ValueError``.
+
+    >>> sweep_triangulation([(0, 0), (1, 1), (2, -1), (3, 0.5)]).tolist()
+    [[0, 2, 1], [1, 2, 3]]
+    """
+    P = as_points(points)
+    xy = [tuple(p) for p in P.tolist()]
+    order = sorted(range(len(xy)), key=lambda i: xy[i])
+    if len(order) < 3:
+        return np.zeros((0, 3), dtype=np.int64)
+    a, b, c = order[:3]
+    turn = orient2d(xy[a], xy[b], xy[c])
+    if turn == 0:
+        raise ValueError("the first three points (by x) are collinear: sweep_triangulation needs general position")
+    hull = [a, b, c] if turn > 0 else [a, c, b]          # counter-clockwise
+    tris = [_canon(hull)]
+    for p in order[3:]:
+        side = [orient2d(xy[hull[i]], xy[hull[(i + 1) % len(hull)]], xy[p]) for i in range(len(hull))]
+        if 0 in side:
+            raise ValueError(f"point {p} is collinear with a hull edge: sweep_triangulation needs general position")
+        first = next(i for i in range(len(hull)) if side[i] < 0 and side[i - 1] > 0)
+        hull = hull[first:] + hull[:first]              # the edges p sees are now 0 .. k-1
+        side = side[first:] + side[:first]
+        k = next(i for i in range(len(hull)) if side[i] > 0)
+        tris += [_canon((hull[j + 1], hull[j], p)) for j in range(k)]
+        hull = [hull[0], p] + hull[k:]
+    return _array(tris)
+
+
+
 def _opposite(T: list[Tri]) -> dict[tuple[int, int], int]:
     opp = {}
     for a, b, c in T:

@@ -1,0 +1,162 @@
+"""Players for the theory lesson (13): one constrained segment inserted step by step, and one 3D
+cavity turned around.
+
+Run the examples:  python -m pytest reference_impl/kit/theory.py
+
+Both are ``StepPlayer``s built on the teaching code: ``segment_player`` plays
+``teaching.segment.insert_segment`` (the crossed triangles found one by one, the two cavities, each
+new triangle with its empty circle), ``cavity_player`` turns the boundary of one 3D insertion's
+cavity (``teaching.cavity3d.cavity_3d``) around its vertical axis.
+
+>>> pts = [(0, 0), (2, -1), (4, 0), (2.5, 1), (2, 3), (1.5, 1.2)]
+>>> p = segment_player(pts, 1, 4)
+>>> [f.phase for f in p.steps]
+['start', 'cross', 'cross', 'cavity', 'new', 'new', 'done']
+>>> p.index = 3; print(p.caption.value.split(": ", 1)[1])
+delete the 2 crossed triangles: two cavities remain, left of the segment (vertices 1, 5, 4) and right of it (vertices 1, 3, 4)
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from reference_impl.mesh.delaunay import Delaunay
+from reference_impl.teaching.cavity3d import Cavity3D
+from reference_impl.teaching.segment import SegmentInsertion, insert_segment
+from reference_impl.validate import as_points
+
+from .player import StepPlayer
+from .render import COLORS, draw_circumcircle, draw_edges, draw_points, draw_triangles, fill_triangles, fit_bounds
+
+__all__ = ["SegmentFrame", "segment_frames", "segment_player", "cavity_player", "SEGMENT_PSEUDOCODE"]
+
+SEGMENT_PSEUDOCODE = [
+    ("start", "insert segment a-b into a (Delaunay) triangulation"),
+    ("cross", "walk from a towards b: collect every triangle the segment crosses"),
+    ("cavity", "delete them: one polygon left of a-b, one right of it, a-b an edge of both"),
+    ("new", "in each polygon: the vertex c with no polygon vertex inside circle(a, b, c) makes "
+            "triangle (a, b, c); repeat on the two smaller polygons cut off by a-c and c-b"),
+    ("done", "the segment is an edge; every other edge is locally Delaunay"),
+]
+
+
+@dataclass(frozen=True)
+class SegmentFrame:
+    """One picture of a segment insertion: its phase and how far it has got (``count``)."""
+
+    phase: str
+    count: int
+
+
+def segment_frames(points, a: int, b: int, triangles=None) -> tuple[np.ndarray, SegmentInsertion, list[SegmentFrame]]:
+    """(points, the insertion, its frames); ``triangles`` default: the Delaunay triangulation.
+
+    >>> _, ins, frames = segment_frames([(0, 0), (1, 0), (0, 1)], 0, 1)
+    >>> [f.phase for f in frames]
+    ['start', 'done']
+    """
+    P = as_points(points)
+    T = Delaunay(P).simplices if triangles is None else triangles
+    ins = insert_segment(P, T, a, b)
+    frames = [SegmentFrame("start", 0)]
+    frames += [SegmentFrame("cross", k + 1) for k in range(len(ins.crossed))]
+    if ins.crossed:
+        frames.append(SegmentFrame("cavity", 0))
+    frames += [SegmentFrame("new", k + 1) for k in range(len(ins.new))]
+    frames.append(SegmentFrame("done", 0))
+    return P, ins, frames
+
+
+def segment_player(points, a: int, b: int, triangles=None, *, title: str = "inserting a segment",
+                   **kwargs: Any) -> StepPlayer:
+    """A ``StepPlayer`` through the insertion of segment a-b (see ``segment_frames``)."""
+    P, ins, frames = segment_frames(points, a, b, triangles)
+    bounds = kwargs.pop("bounds", None) or fit_bounds(P)
+    crossed_set = set(ins.crossed)
+    kept = [t for t in ins.before.tolist() if _canon(t) not in crossed_set]
+
+    def draw(ax, f: SegmentFrame, _k: int) -> None:
+        ax.set_xlim(bounds[0], bounds[2])
+        ax.set_ylim(bounds[1], bounds[3])
+        if f.phase in ("start", "cross"):
+            fill_triangles(ax, P, ins.crossed[:f.count], color=COLORS["bad"])
+            draw_triangles(ax, P, ins.before)
+        elif f.phase in ("cavity", "new"):
+            draw_triangles(ax, P, kept)
+            made = ins.new[:f.count]
+            fill_triangles(ax, P, made, color=COLORS["new"])
+            draw_triangles(ax, P, made)
+            for side in (ins.left, ins.right):
+                ring = [ins.a] + side + [ins.b]
+                draw_edges(ax, P, list(zip(ring, ring[1:])), color=COLORS["bad"], linewidth=2)
+            if f.phase == "new":
+                draw_circumcircle(ax, *P[list(ins.new[f.count - 1])])
+        else:
+            draw_triangles(ax, P, ins.triangles)
+        draw_edges(ax, P, [(ins.a, ins.b)], color=COLORS["flip"], linewidth=3,
+                   linestyle="--" if f.phase in ("start", "cross") else "-")
+        draw_points(ax, P, labels=len(P) <= 30)
+
+    def describe(f: SegmentFrame) -> str:
+        if f.phase == "start":
+            return (f"segment {ins.a}-{ins.b} (orange, dashed) must become an edge; "
+                    + (f"it crosses {len(ins.crossed)} triangles" if ins.crossed else "it already is one"))
+        if f.phase == "cross":
+            return f"crossed triangle {f.count} of {len(ins.crossed)}: {ins.crossed[f.count - 1]}"
+        if f.phase == "cavity":
+            left = ", ".join(map(str, [ins.a] + ins.left + [ins.b]))
+            right = ", ".join(map(str, [ins.a] + ins.right + [ins.b]))
+            return (f"delete the {len(ins.crossed)} crossed triangles: two cavities remain, left of the "
+                    f"segment (vertices {left}) and right of it (vertices {right})")
+        if f.phase == "new":
+            return (f"new triangle {f.count} of {len(ins.new)}: {ins.new[f.count - 1]}; its dashed circle "
+                    "holds no other vertex of its polygon")
+        return (f"done: {len(ins.crossed)} triangles out, {len(ins.new)} in "
+                f"({len(ins.triangles)} triangles, as before)")
+
+    return StepPlayer(frames, draw, phases=lambda f: f.phase, pseudocode=SEGMENT_PSEUDOCODE, title=title,
+                      describe=describe, bounds=bounds, **kwargs)
+
+
+def _canon(t) -> tuple[int, int, int]:
+    a, b, c = (int(v) for v in t)
+    if a < b and a < c:
+        return (a, b, c)
+    return (b, c, a) if b < c else (c, a, b)
+
+
+def cavity_player(points, cavity: Cavity3D, *, turns: int = 12, title: str = "one 3D cavity, turning",
+                  **kwargs: Any) -> StepPlayer:
+    """Turn the cavity's boundary faces (and the new point, red) around the vertical axis.
+
+    Each frame is a projection after turning by another 180 / ``turns`` degrees; the faces are
+    drawn back to front, half transparent, so the point is seen inside its cavity.
+    """
+    P = as_points(points, dim=3)
+    faces = np.asarray(cavity.boundary, dtype=np.int64).reshape(-1, 3)
+    used = sorted({int(v) for v in faces.ravel()})
+    centre = P[used + [cavity.q]].mean(axis=0)
+    span = float(np.ptp(P[used], axis=0).max()) or 1.0
+    angles = list(np.linspace(0, np.pi, max(1, int(turns)), endpoint=False))
+
+    def project(angle: float) -> tuple[np.ndarray, np.ndarray]:
+        c, s = np.cos(angle), np.sin(angle)
+        Q = (P - centre) / span @ np.array([[c, 0, -s], [0, 1, 0], [s, 0, c]]).T
+        return np.c_[Q[:, 0], 0.85 * Q[:, 1] + 0.3 * Q[:, 2]], Q[:, 2]
+
+    def draw(ax, angle: float, _k: int) -> None:
+        xy, depth = project(angle)
+        order = np.argsort(-depth[faces].mean(axis=1))          # far faces first
+        fill_triangles(ax, xy, faces[order], color=COLORS["bad"], alpha=0.25)   # drawn in that order
+        draw_triangles(ax, xy, faces, color=COLORS["edge"], linewidth=0.7)
+        draw_points(ax, xy[used], size=14)
+        draw_points(ax, xy[[cavity.q]], color=COLORS["new_point"], size=60)
+
+    def describe(angle: float) -> str:
+        return (f"turned {np.degrees(angle):.0f} degrees: {len(cavity.bad)} bad tetrahedra, "
+                f"{len(faces)} boundary faces on {len(used)} vertices, {len(cavity.new)} new tetrahedra")
+
+    return StepPlayer(angles, draw, describe=describe, bounds=(-0.9, -0.9, 0.9, 0.9), title=title,
+                      interval=kwargs.pop("interval", 400), **kwargs)
