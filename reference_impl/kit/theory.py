@@ -158,5 +158,5 @@ def cavity_player(points, cavity: Cavity3D, *, turns: int = 12, title: str = "on
         return (f"turned {np.degrees(angle):.0f} degrees: {len(cavity.bad)} bad tetrahedra, "
                 f"{len(faces)} boundary faces on {len(used)} vertices, {len(cavity.new)} new tetrahedra")
 
-    return StepPlayer(angles, draw, describe=describe, bounds=(-0.9, -0.9, 0.9, 0.9), title=title,
+    return StepPlayer(angles, draw, describe=describe, bounds=(-0.75, -0.75, 0.75, 0.75), title=title,
                       interval=kwargs.pop("interval", 400), **kwargs)
