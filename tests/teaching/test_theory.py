@@ -21,7 +21,8 @@ from reference_impl.teaching.cavity3d import cavity_3d, surface_counts
 from reference_impl.teaching.locate import BVH, HashGrid, KDTree, QuadTree, TriMesh
 from reference_impl.teaching.segment import insert_segment
 from reference_impl.teaching.theory import (all_triangulations, angle_vector, compare_angle_vectors, illegal_edges,
-                                            lawson, mean_star_size, new_triangles_per_insertion, star_sizes)
+                                            lawson, mean_star_size, new_triangles_per_insertion, star_sizes,
+                                            sweep_triangulation)
 
 
 def _sorted_tris(T) -> list[tuple[int, ...]]:
@@ -191,3 +192,43 @@ def test_cavity_3d_bad_input():
         cavity_3d(pts, good, 0)
     with pytest.raises(ValueError, match="not positively oriented"):
         cavity_3d(pts, good[:, [1, 0, 2, 3]], 4)
+
+
+# ----------------------------------------------------------------------------- the players (kit/theory.py)
+def test_segment_player_frames_follow_the_insertion():
+    from reference_impl.kit.theory import segment_player
+
+    rng = np.random.default_rng(21)
+    P = rng.random((20, 2))
+    a, b = int(np.argmin(P[:, 0])), int(np.argmax(P[:, 0]))
+    player = segment_player(P, a, b)
+    ins = insert_segment(P, Delaunay(P).simplices, a, b)
+    phases = [f.phase for f in player.steps]
+    assert phases == ["start"] + ["cross"] * len(ins.crossed) + ["cavity"] + ["new"] * len(ins.new) + ["done"]
+    player.index = len(phases) - 1
+    assert player.current_line == "done" and f"{len(ins.crossed)} triangles out" in player.caption.value
+    assert player.static_png()[:4] == b"\x89PNG"
+
+
+def test_cavity_player_turns_and_says_what_it_shows():
+    from reference_impl.kit.theory import cavity_player
+
+    P = np.random.default_rng(1).random((40, 3))
+    P2 = np.r_[P, [[0.5, 0.5, 0.5]]]
+    cav = cavity_3d(P2, delaunay_3d(P), 40)
+    player = cavity_player(P2, cav, turns=4)
+    assert len(player.steps) == 4
+    player.next.click()
+    assert player.caption.value.startswith("<b>step 2/4</b>: turned 45 degrees")
+    assert f"{len(cav.boundary)} boundary faces" in player.caption.value
+
+
+def test_sweep_triangulation_is_a_triangulation_and_lawson_repairs_it():
+    from reference_impl.structures.flips import validate_triangulation
+
+    P = np.random.default_rng(8).random((150, 2))
+    T = sweep_triangulation(P)
+    assert len(validate_triangulation(P, T)) == len(Delaunay(P).simplices)
+    assert _sorted_tris(lawson(P, T)[-1]) == _sorted_tris(Delaunay(P).simplices)
+    with pytest.raises(ValueError, match="general position"):
+        sweep_triangulation([(0, 0), (1, 1), (2, 2), (3, 0)])
