@@ -53,6 +53,17 @@ def _as_triangles(triangles) -> list[Tri]:
     return [_canon(t) for t in T.tolist()]
 
 
+def _checked(xy: list, triangles) -> list[Tri]:
+    """The triangles, canonical, after checking indices and counter-clockwise orientation."""
+    T = _as_triangles(triangles)
+    for t in T:
+        if min(t) < 0 or max(t) >= len(xy):
+            raise ValueError(f"triangle {t} has an index outside 0..{len(xy) - 1}")
+        if orient2d(xy[t[0]], xy[t[1]], xy[t[2]]) <= 0:
+            raise ValueError(f"triangle {t} is not counter-clockwise (or has zero area)")
+    return T
+
+
 def _array(tris) -> np.ndarray:
     return np.array(sorted(tris), dtype=np.int64).reshape(-1, 3)
 
@@ -94,6 +105,8 @@ def star_sizes(n: int, triangles) -> np.ndarray:
     [4, 3, 3, 4]
     """
     T = _as_triangles(triangles)
+    if T and (min(map(min, T)) < 0 or max(map(max, T)) >= n):
+        raise ValueError(f"a triangle has a vertex index outside 0..{n - 1}")
     size = np.zeros(n, dtype=np.int64)
     directed = set()
     for a, b, c in T:
@@ -222,7 +235,7 @@ def lawson(points, triangles, max_flips: int = 100_000) -> list[np.ndarray]:
     [1]
     """
     P = as_points(points).tolist()
-    T = set(_as_triangles(triangles))
+    T = set(_checked(P, triangles))
     opp = _opposite(sorted(T))
     states = [_array(T)]
     stack = [e for e in opp if e[0] < e[1]]

@@ -232,3 +232,12 @@ def test_sweep_triangulation_is_a_triangulation_and_lawson_repairs_it():
     assert _sorted_tris(lawson(P, T)[-1]) == _sorted_tris(Delaunay(P).simplices)
     with pytest.raises(ValueError, match="general position"):
         sweep_triangulation([(0, 0), (1, 1), (2, 2), (3, 0)])
+
+
+def test_bad_triangulations_are_refused():
+    with pytest.raises(ValueError, match="not counter-clockwise"):
+        lawson([(0, 0), (1, 0), (0, 1)], [(0, 2, 1)])
+    with pytest.raises(ValueError, match="outside 0..2"):
+        lawson([(0, 0), (1, 0), (0, 1)], [(0, 1, 3)])
+    with pytest.raises(ValueError, match="outside 0..1"):
+        star_sizes(2, [(0, 1, 2)])
