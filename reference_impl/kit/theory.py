@@ -71,7 +71,12 @@ def segment_frames(points, a: int, b: int, triangles=None) -> tuple[np.ndarray, 
 
 def segment_player(points, a: int, b: int, triangles=None, *, title: str = "inserting a segment",
                    **kwargs: Any) -> StepPlayer:
-    """A ``StepPlayer`` through the insertion of segment a-b (see ``segment_frames``)."""
+    """A ``StepPlayer`` through the insertion of segment a-b (see ``segment_frames``).
+
+    >>> p = segment_player([(0, 0), (2, -1), (4, 0), (2, 1)], 0, 2)     # crosses edge 1-3
+    >>> p.index = len(p.steps) - 1; print(p.caption.value.split(": ", 1)[1])
+    done: 2 triangles out, 2 in (2 triangles, as before)
+    """
     P, ins, frames = segment_frames(points, a, b, triangles)
     bounds = kwargs.pop("bounds", None) or fit_bounds(P)
     crossed_set = set(ins.crossed)
@@ -133,6 +138,12 @@ def cavity_player(points, cavity: Cavity3D, *, turns: int = 12, title: str = "on
 
     Each frame is a projection after turning by another 180 / ``turns`` degrees; the faces are
     drawn back to front, half transparent, so the point is seen inside its cavity.
+
+    >>> from reference_impl.teaching.cavity3d import cavity_3d
+    >>> pts = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1), (0.2, 0.2, 0.2)]
+    >>> p = cavity_player(pts, cavity_3d(pts, [(0, 2, 1, 3)], 4), turns=3)
+    >>> print(p.caption.value.split(": ", 1)[1])
+    turned 0 degrees: 1 tetrahedron bad, 4 boundary faces on 4 vertices, 4 tetrahedra new
     """
     P = as_points(points, dim=3)
     faces = np.asarray(cavity.boundary, dtype=np.int64).reshape(-1, 3)
@@ -155,8 +166,11 @@ def cavity_player(points, cavity: Cavity3D, *, turns: int = 12, title: str = "on
         draw_points(ax, xy[[cavity.q]], color=COLORS["new_point"], size=60)
 
     def describe(angle: float) -> str:
-        return (f"turned {np.degrees(angle):.0f} degrees: {len(cavity.bad)} bad tetrahedra, "
-                f"{len(faces)} boundary faces on {len(used)} vertices, {len(cavity.new)} new tetrahedra")
+        def tets(k: int) -> str:
+            return f"{k} {'tetrahedron' if k == 1 else 'tetrahedra'}"
+
+        return (f"turned {np.degrees(angle):.0f} degrees: {tets(len(cavity.bad))} bad, "
+                f"{len(faces)} boundary faces on {len(used)} vertices, {tets(len(cavity.new))} new")
 
     return StepPlayer(angles, draw, describe=describe, bounds=(-0.75, -0.75, 0.75, 0.75), title=title,
                       interval=kwargs.pop("interval", 400), **kwargs)

@@ -54,6 +54,11 @@ def cavity_3d(points, tetrahedra, q: int) -> Cavity3D:
 
     Raises ``ValueError`` for a tetrahedron that is not positively oriented, or
     when no tetrahedron is bad (q is then outside the hull's circumspheres or a duplicate).
+
+    >>> pts = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1), (0.2, 0.2, 0.2)]
+    >>> cav = cavity_3d(pts, [(0, 2, 1, 3)], 4)            # one tetrahedron, q inside it
+    >>> cav.bad, len(cav.boundary), surface_counts(cav.boundary)
+    ([(0, 2, 1, 3)], 4, (4, 6, 4, True))
     """
     P = as_points(points, dim=3)
     xyz = [tuple(p) for p in P.tolist()]

@@ -50,6 +50,14 @@ class TriMesh:
 
     ``triangles`` (m, 3) counter-clockwise.  ``neighbors[t, k]`` is the triangle across
     the edge opposite vertex k (-1 outside the hull); ``around[v]`` lists v's triangles.
+
+    >>> m = TriMesh([(0, 0), (1, 0), (1, 1), (0, 1)], [(0, 1, 2), (0, 2, 3)])
+    >>> m.neighbors.tolist(), m.around[0]
+    ([[-1, 1, -1], [-1, -1, 0]], [0, 1])
+    >>> m.bad_mask((0.9, 0.1)).tolist(), m.containing((0.1, 0.9))
+    ([True, True], (1, 2))
+    >>> m.around_vertex(1, (0.9, 0.1))
+    1
     """
 
     def __init__(self, points, triangles) -> None:

@@ -220,7 +220,7 @@ def test_cavity_player_turns_and_says_what_it_shows():
     assert len(player.steps) == 4
     player.next.click()
     assert player.caption.value.startswith("<b>step 2/4</b>: turned 45 degrees")
-    assert f"{len(cav.boundary)} boundary faces" in player.caption.value
+    assert f"{len(cav.boundary)} boundary faces" in player.caption.value and "tetrahedra new" in player.caption.value
 
 
 def test_sweep_triangulation_is_a_triangulation_and_lawson_repairs_it():
