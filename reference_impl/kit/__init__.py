@@ -15,7 +15,8 @@ and the library never import ipywidgets):
 * ``TimedPractice`` (timer.py): a countdown and the judge's ``timed submit`` one click away;
 * ``progress`` (progress.py): one output line that says how far a long cell has got;
 * ``theory`` (theory.py): lesson 13's players, one constrained segment inserted
-  (``segment_player``) and one 3D cavity turned (``cavity_player``);
+  (``segment_player``), one 3D cavity turned (``cavity_player``), each Lawson flip's six
+  angles (``flip_angle_player``);
 * ``render`` (render.py): the drawing helpers they share.
 
 Every widget also carries a static PNG for notebooks run without a browser.

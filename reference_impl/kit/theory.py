@@ -6,7 +6,8 @@ Run the examples:  python -m pytest reference_impl/kit/theory.py
 Both are ``StepPlayer``s built on the teaching code: ``segment_player`` plays
 ``teaching.segment.insert_segment`` (the crossed triangles found one by one, the two cavities, each
 new triangle with its empty circle), ``cavity_player`` turns the boundary of one 3D insertion's
-cavity (``teaching.cavity3d.cavity_3d``) around its vertical axis.
+cavity (``teaching.cavity3d.cavity_3d``) around its vertical axis, and ``flip_angle_player`` shows
+the six angles each of Lawson's flips (``teaching.theory.lawson``) takes away and puts back.
 
 >>> pts = [(0, 0), (2, -1), (4, 0), (2.5, 1), (2, 3), (1.5, 1.2)]
 >>> p = segment_player(pts, 1, 4)
@@ -25,12 +26,14 @@ import numpy as np
 from reference_impl.mesh.delaunay import Delaunay
 from reference_impl.teaching.cavity3d import Cavity3D
 from reference_impl.teaching.segment import SegmentInsertion, insert_segment
+from reference_impl.teaching.theory import angle_vector, lawson
 from reference_impl.validate import as_points
 
 from .player import StepPlayer
 from .render import COLORS, draw_circumcircle, draw_edges, draw_points, draw_triangles, fill_triangles, fit_bounds
 
-__all__ = ["SegmentFrame", "segment_frames", "segment_player", "cavity_player", "SEGMENT_PSEUDOCODE"]
+__all__ = ["SegmentFrame", "segment_frames", "segment_player", "cavity_player", "flip_angle_player",
+           "SEGMENT_PSEUDOCODE"]
 
 SEGMENT_PSEUDOCODE = [
     ("start", "insert segment a-b into a (Delaunay) triangulation"),
@@ -174,3 +177,59 @@ def cavity_player(points, cavity: Cavity3D, *, turns: int = 12, title: str = "on
 
     return StepPlayer(angles, draw, describe=describe, bounds=(-0.75, -0.75, 0.75, 0.75), title=title,
                       interval=kwargs.pop("interval", 400), **kwargs)
+
+
+@dataclass(frozen=True, eq=False)
+class FlipAngles:
+    """One flip of a Lawson run: the triangulation before and after, the two triangles it removes
+    and the two it makes, and their six angles (degrees, sorted) each."""
+
+    before: np.ndarray
+    after: np.ndarray
+    old: list
+    new: list
+    old_angles: np.ndarray
+    new_angles: np.ndarray
+
+
+def flip_angle_player(points, triangles, *, title: str = "each flip's six angles", **kwargs: Any) -> StepPlayer:
+    """Step through Lawson's flips from ``triangles``, two frames a flip: the quadrilateral before
+    (its two triangles red) and after (green), with the six angles of each in the caption.
+
+    >>> p = flip_angle_player([(0, 0), (4, 0), (4, 1), (0, 3)], [(0, 1, 3), (1, 2, 3)])
+    >>> flip, phase = p.steps[0]; len(p.steps), phase, bool(flip.old_angles.min() < flip.new_angles.min())
+    (2, 'before', True)
+    """
+    P = as_points(points)
+    states = lawson(P, triangles)
+    flips = []
+    for before, after in zip(states, states[1:]):
+        b, a = {tuple(t) for t in before.tolist()}, {tuple(t) for t in after.tolist()}
+        old, new = sorted(b - a), sorted(a - b)
+        flips.append(FlipAngles(before, after, old, new, np.degrees(angle_vector(P, old)),
+                                np.degrees(angle_vector(P, new))))
+    if not flips:
+        raise ValueError("the triangulation is already Delaunay: there is no flip to show")
+    frames = [(f, phase) for f in flips for phase in ("before", "after")]
+    bounds = kwargs.pop("bounds", None) or fit_bounds(P)
+
+    def draw(ax, frame, _k: int) -> None:
+        f, phase = frame
+        ax.set_xlim(bounds[0], bounds[2])
+        ax.set_ylim(bounds[1], bounds[3])
+        shown, pair = (f.before, f.old) if phase == "before" else (f.after, f.new)
+        fill_triangles(ax, P, pair, color=COLORS["bad"] if phase == "before" else COLORS["new"])
+        draw_triangles(ax, P, shown)
+        draw_points(ax, P, labels=len(P) <= 30)
+
+    def describe(frame) -> str:
+        f, phase = frame
+        k = next(i for i, g in enumerate(flips, start=1) if g is f)
+        six = ", ".join(f"{v:.1f}" for v in (f.old_angles if phase == "before" else f.new_angles))
+        if phase == "before":
+            return f"flip {k} of {len(flips)}: triangles {f.old[0]} and {f.old[1]}; their angles {six} degrees"
+        return (f"after flip {k}: triangles {f.new[0]} and {f.new[1]}; their angles {six} degrees: the smallest "
+                f"went from {f.old_angles[0]:.1f} to {f.new_angles[0]:.1f}")
+
+    return StepPlayer(frames, draw, describe=describe, bounds=bounds, title=title, **kwargs)
+

@@ -241,3 +241,18 @@ def test_bad_triangulations_are_refused():
         lawson([(0, 0), (1, 0), (0, 1)], [(0, 1, 3)])
     with pytest.raises(ValueError, match="outside 0..1"):
         star_sizes(2, [(0, 1, 2)])
+
+
+def test_flip_angle_player_shows_every_flip_raising_the_smallest_angle():
+    from reference_impl.kit.theory import flip_angle_player
+
+    P = np.random.default_rng(5).random((14, 2))
+    T = sweep_triangulation(P)
+    player = flip_angle_player(P, T)
+    assert len(player.steps) == 2 * (len(lawson(P, T)) - 1)
+    for flip, phase in player.steps[::2]:
+        assert flip.new_angles[0] > flip.old_angles[0] and len(flip.old_angles) == len(flip.new_angles) == 6
+    player.next.click()
+    assert "the smallest went from" in player.caption.value
+    with pytest.raises(ValueError, match="already Delaunay"):
+        flip_angle_player(P, Delaunay(P).simplices)
