@@ -16,7 +16,7 @@ and the library never import ipywidgets):
 * ``progress`` (progress.py): one output line that says how far a long cell has got;
 * ``theory`` (theory.py): lesson 13's players, one constrained segment inserted
   (``segment_player``), one 3D cavity turned (``cavity_player``), each Lawson flip's six
-  angles (``flip_angle_player``);
+  angles (``flip_angle_player``), each insertion's new triangles (``star_player``);
 * ``render`` (render.py): the drawing helpers they share.
 
 Every widget also carries a static PNG for notebooks run without a browser.

@@ -7,7 +7,8 @@ Both are ``StepPlayer``s built on the teaching code: ``segment_player`` plays
 ``teaching.segment.insert_segment`` (the crossed triangles found one by one, the two cavities, each
 new triangle with its empty circle), ``cavity_player`` turns the boundary of one 3D insertion's
 cavity (``teaching.cavity3d.cavity_3d``) around its vertical axis, and ``flip_angle_player`` shows
-the six angles each of Lawson's flips (``teaching.theory.lawson``) takes away and puts back.
+the six angles each of Lawson's flips (``teaching.theory.lawson``) takes away and puts back;
+``star_player`` shows each insertion's new triangles (the new point's star) and their running mean.
 
 >>> pts = [(0, 0), (2, -1), (4, 0), (2.5, 1), (2, 3), (1.5, 1.2)]
 >>> p = segment_player(pts, 1, 4)
@@ -24,6 +25,7 @@ from typing import Any
 import numpy as np
 
 from reference_impl.mesh.delaunay import Delaunay
+from reference_impl.teaching.bowyer_watson import INFINITE, Step, bowyer_watson
 from reference_impl.teaching.cavity3d import Cavity3D
 from reference_impl.teaching.segment import SegmentInsertion, insert_segment
 from reference_impl.teaching.theory import angle_vector, lawson
@@ -33,7 +35,7 @@ from .player import StepPlayer
 from .render import COLORS, draw_circumcircle, draw_edges, draw_points, draw_triangles, fill_triangles, fit_bounds
 
 __all__ = ["SegmentFrame", "segment_frames", "segment_player", "cavity_player", "flip_angle_player",
-           "SEGMENT_PSEUDOCODE"]
+           "star_player", "SEGMENT_PSEUDOCODE"]
 
 SEGMENT_PSEUDOCODE = [
     ("start", "insert segment a-b into a (Delaunay) triangulation"),
@@ -232,4 +234,50 @@ def flip_angle_player(points, triangles, *, title: str = "each flip's six angles
                 f"went from {f.old_angles[0]:.1f} to {f.new_angles[0]:.1f}")
 
     return StepPlayer(frames, draw, describe=describe, bounds=bounds, title=title, **kwargs)
+
+
+def star_player(points, order=None, *, title: str = "each insertion's new triangles", **kwargs: Any) -> StepPlayer:
+    """One frame per insertion (from the third point): the triangulation after it, the new point's
+    star in green, and the count of created triangles (ghosts included) with the mean so far.
+
+    ``order``: a permutation of the point indices (default: as given).
+
+    >>> p = star_player([(0, 0), (1, 0), (0, 1), (0.9, 0.8)])
+    >>> p.index = 1; print(p.caption.value.split(": ", 1)[1])
+    point 3 creates 4 triangles (2 real, 2 ghosts outside hull edges); mean so far 3.50 (bound on the mean: 6)
+    """
+    P = as_points(points)
+    order = np.arange(len(P)) if order is None else np.asarray(order, dtype=np.int64)
+    if sorted(order.tolist()) != list(range(len(P))):
+        raise ValueError(f"order must be a permutation of 0..{len(P) - 1}")
+    steps: list[Step] = []
+    bowyer_watson(P[order], trace=steps, locate="walk", order="input")
+    steps = steps[2:]
+    if not steps:
+        raise ValueError("fewer than three points off one line: nothing is inserted")
+    counts = np.array([len(s.new) for s in steps])
+    means = np.cumsum(counts) / np.arange(1, len(counts) + 1)
+    bounds = kwargs.pop("bounds", None) or fit_bounds(P)
+    Q = P[order]
+
+    def draw(ax, k: int, _i: int) -> None:
+        s = steps[k]
+        ax.set_xlim(bounds[0], bounds[2])
+        ax.set_ylim(bounds[1], bounds[3])
+        real = [t for t in s.new if INFINITE not in t]
+        fill_triangles(ax, Q, real, color=COLORS["new"])
+        draw_triangles(ax, Q, s.triangles)
+        ghosts = [(t[0], t[1]) for t in s.new if INFINITE in t and INFINITE not in (t[0], t[1])]
+        draw_edges(ax, Q, ghosts, color=COLORS["hull"], linewidth=2.5, linestyle=":")
+        inserted = sorted({v for t in s.triangles.tolist() for v in t} | {s.index})
+        draw_points(ax, Q[inserted])
+        draw_points(ax, Q[[s.index]], color=COLORS["new_point"], size=60)
+
+    def describe(k: int) -> str:
+        s = steps[k]
+        ghosts = sum(INFINITE in t for t in s.new)
+        return (f"point {int(order[s.index])} creates {len(s.new)} triangles ({len(s.new) - ghosts} real, "
+                f"{ghosts} ghosts outside hull edges); mean so far {means[k]:.2f} (bound on the mean: 6)")
+
+    return StepPlayer(list(range(len(steps))), draw, describe=describe, bounds=bounds, title=title, **kwargs)
 

@@ -256,3 +256,18 @@ def test_flip_angle_player_shows_every_flip_raising_the_smallest_angle():
     assert "the smallest went from" in player.caption.value
     with pytest.raises(ValueError, match="already Delaunay"):
         flip_angle_player(P, Delaunay(P).simplices)
+
+
+def test_star_player_counts_what_the_insertions_create():
+    from reference_impl.kit.theory import star_player
+
+    P = np.random.default_rng(3).random((25, 2))
+    order = np.random.default_rng(1).permutation(25)
+    player = star_player(P, order)
+    created = new_triangles_per_insertion(P, order)
+    assert len(player.steps) == len(created)
+    player.index = len(created) - 1
+    assert f"creates {created[-1]} triangles" in player.caption.value
+    assert f"mean so far {created.mean():.2f}" in player.caption.value
+    with pytest.raises(ValueError, match="permutation"):
+        star_player(P, [0] * 25)
