@@ -157,6 +157,14 @@ def _d2(P: np.ndarray, i: int, p) -> float:
     return (P[i, 0] - p[0]) ** 2 + (P[i, 1] - p[1]) ** 2
 
 
+def _closer(P: np.ndarray, ids, p, best: list) -> None:
+    """Update ``best = [squared distance, index]`` with the points ``ids`` of a leaf."""
+    for i in ids:
+        d = _d2(P, i, p)
+        if d < best[0]:
+            best[:] = [d, i]
+
+
 class KDTree:
     """A 2D kd-tree over points (split at the median, alternating x and y, leaves of up to 4).
 
@@ -189,10 +197,7 @@ class KDTree:
             nonlocal visited
             visited += 1
             if node[0] == "leaf":
-                for i in node[1]:
-                    d = _d2(self.P, i, p)
-                    if d < best[0]:
-                        best[:] = [d, i]
+                _closer(self.P, node[1], p, best)
                 return
             _, axis, cut, lo, hi = node
             near, far = (lo, hi) if p[axis] < cut else (hi, lo)
@@ -245,10 +250,7 @@ class QuadTree:
             nonlocal visited
             visited += 1
             if node[0] == "leaf":
-                for i in node[4]:
-                    d = _d2(self.P, i, p)
-                    if d < best[0]:
-                        best[:] = [d, i]
+                _closer(self.P, node[4], p, best)
                 return
             for kid in sorted(node[4], key=box_d2):
                 if box_d2(kid) < best[0]:
