@@ -105,22 +105,26 @@ class TriMesh:
             raise ValueError(f"no triangle is bad for {tuple(p)}: is it a duplicate of a vertex?")
         return int(hits[0]) + 1
 
+    def _step(self, t: int, p: tuple) -> int | None:
+        """The neighbour across the first edge of ``t`` that has p strictly on its outer side, or None
+        when p is in ``t`` (the visibility walk's step)."""
+        tri = self.T[t]
+        for k in range(3):
+            u, v = tri[(k + 1) % 3], tri[(k + 2) % 3]
+            if orient2d(self.xy[u], self.xy[v], p) < 0:
+                nxt = int(self.neighbors[t, k])
+                if nxt < 0:
+                    raise ValueError(f"{p} is outside the convex hull of the triangulation")
+                return nxt
+        return None
+
     def containing(self, p, start: int = 0) -> tuple[int, int]:
         """(triangle containing p, triangles visited), by the visibility walk from ``start``."""
         t, visited = start, 1
         p = tuple(p)
-        while True:
-            tri = self.T[t]
-            for k in range(3):
-                u, v = tri[(k + 1) % 3], tri[(k + 2) % 3]
-                if orient2d(self.xy[u], self.xy[v], p) < 0:
-                    nxt = int(self.neighbors[t, k])
-                    if nxt < 0:
-                        raise ValueError(f"{p} is outside the convex hull of the triangulation")
-                    t, visited = nxt, visited + 1
-                    break
-            else:
-                return t, visited
+        while (nxt := self._step(t, p)) is not None:
+            t, visited = nxt, visited + 1
+        return t, visited
 
     def walk(self, p, start: int = 0) -> int:
         """Triangles the walk from ``start`` tests until it stands on a bad one.
@@ -131,17 +135,10 @@ class TriMesh:
         t, visited = start, 1
         p = tuple(p)
         while not self.is_bad(t, p):
-            tri = self.T[t]
-            for k in range(3):
-                u, v = tri[(k + 1) % 3], tri[(k + 2) % 3]
-                if orient2d(self.xy[u], self.xy[v], p) < 0:
-                    t = int(self.neighbors[t, k])
-                    if t < 0:
-                        raise ValueError(f"{p} is outside the convex hull of the triangulation")
-                    visited += 1
-                    break
-            else:
+            nxt = self._step(t, p)
+            if nxt is None:
                 raise RuntimeError("internal error: the triangle containing p is not bad")
+            t, visited = nxt, visited + 1
         return visited
 
     def around_vertex(self, q: int, p) -> int:
