@@ -58,7 +58,7 @@ class Hub:
 
     def stop(self) -> None:
         """SIGTERM the hub (it stops its servers and proxy), then kill what is left of its session
-        and of the hub-* accounts' processes it started."""
+        and of the hub-* accounts' processes it started; remove COURSE_HOME."""
         if self.proc.poll() is None:
             self.proc.terminate()
             try:
@@ -77,6 +77,7 @@ class Hub:
                         os.kill(int(p.name), signal.SIGKILL)
                 except (OSError, ProcessLookupError):
                     pass
+        shutil.rmtree(self.home, ignore_errors=True)
 
 
 def start_hub(timeout: float = 240) -> Hub:
