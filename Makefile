@@ -1,7 +1,8 @@
 # The course's two commands (see README.md):
 #   make demo   set everything up, then run the headless tour of the course
 #   make test   set everything up, then run the whole test suite
-# Other targets: make lab (open the lessons in JupyterLab), make bench, make setup, make warm, make clean.
+# Other targets: make lab (open the lessons in JupyterLab), make bench, make setup, make warm, make clean,
+#   make hub / make hub-down (the course on JupyterHub with an instructor and three students, as root).
 
 PYTHON ?= python3
 VENV   ?= .venv
@@ -9,7 +10,7 @@ PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed
 LAB_OVERRIDES := $(VENV)/share/jupyter/lab/settings/overrides.json
 
-.PHONY: setup warm demo test lab bench clean chromium bubblewrap
+.PHONY: setup warm demo test lab bench clean chromium bubblewrap hub hub-install hub-down
 
 setup: $(STAMP) $(LAB_OVERRIDES)
 
@@ -69,3 +70,20 @@ bench: warm
 
 clean:
 	rm -rf $(VENV) build .pytest_cache .hypothesis
+
+# The course on JupyterHub (deploy/jupyterhub/README.md), as root: the shared venv (build/hub-venv,
+# rebuilt when pyproject.toml or the sources change), the proxy from npm, the accounts hub-instructor
+# and hub-student1..3 with one password (build/hub/password), then the hub in the foreground on a free
+# port (HUB_PORT=... to choose). Ctrl-C or `make hub-down` stops the hub and every server it started.
+HUB_ENV = COURSE_HOME=$(CURDIR)/build/hub HUB_VENV=$(CURDIR)/build/hub-venv
+hub-install:
+	@mkdir -p build/hub && [ -s build/hub/password ] || (umask 077; /usr/bin/python3 -c 'import secrets; print(secrets.token_urlsafe(9))' > build/hub/password)
+	$(HUB_ENV) HUB_PASSWORD=$$(cat build/hub/password) deploy/jupyterhub/deploy.sh install
+
+hub: hub-install
+	@port=$${HUB_PORT:-$$(/usr/bin/python3 -c 'import socket; s=socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')}; \
+	  echo "JupyterHub: http://127.0.0.1:$$port/  logins: hub-instructor (formgrader), hub-student1..3; password: $$(cat build/hub/password)"; \
+	  $(HUB_ENV) HUB_PORT=$$port HUB_API_PORT=$$((port+1)) HUB_PROXY_API_PORT=$$((port+2)) deploy/jupyterhub/deploy.sh start
+
+hub-down:
+	$(HUB_ENV) deploy/jupyterhub/deploy.sh down

@@ -1,0 +1,126 @@
+#!/usr/bin/env bash
+# The course on JupyterHub: install (as root) and optionally start the hub. Run from the checkout:
+#   sudo deploy/jupyterhub/deploy.sh install            # venv, proxy, accounts, exchange, configs
+#   sudo deploy/jupyterhub/deploy.sh start              # the hub in the foreground (Ctrl-C stops it)
+#   sudo deploy/jupyterhub/deploy.sh down               # stop a hub started by start (pid file)
+# Settings (environment, defaults in brackets):
+#   COURSE_HOME [/opt/delaunay-course]   everything the hub serves, except the venv and the homes
+#   HUB_VENV    [$COURSE_HOME/venv]      the shared course venv (built from /usr/bin/python3:
+#                                        the interpreter must be readable by every account)
+#   HUB_INSTRUCTORS [hub-instructor]  HUB_STUDENTS [hub-student1,hub-student2,hub-student3]
+#   HUB_PASSWORD    when set, every listed account gets this unix password (demo/PAM logins)
+#   HUB_AUTH [pam]  HUB_PORT [8000]
+set -euo pipefail
+REPO="$(cd "$(dirname "$0")/../.." && pwd)"
+HERE="$REPO/deploy/jupyterhub"
+export COURSE_HOME="${COURSE_HOME:-/opt/delaunay-course}"
+export HUB_VENV="${HUB_VENV:-$COURSE_HOME/venv}"
+export HUB_INSTRUCTORS="${HUB_INSTRUCTORS:-hub-instructor}"
+export HUB_STUDENTS="${HUB_STUDENTS:-hub-student1,hub-student2,hub-student3}"
+export HUB_STATE="${HUB_STATE:-$COURSE_HOME/state}"
+EXCHANGE="$COURSE_HOME/exchange"
+COURSE_ID="delaunay-course"
+
+die() { echo "deploy.sh: $*" >&2; exit 1; }
+[ "$(id -u)" = 0 ] || die "run as root: the hub starts servers as other accounts"
+
+venv() {  # the shared venv, rebuilt only when pyproject.toml or the course's sources change
+    local key
+    key="$(cat "$REPO/pyproject.toml" <(cd "$REPO" && find grader reference_impl -name '*.py' -newer "$REPO/pyproject.toml" -printf '%p %T@\n' | sort) | sha256sum | cut -c1-16)"
+    if [ "$(cat "$HUB_VENV/.course-key" 2>/dev/null)" != "$key" ]; then
+        [ -x /usr/bin/python3 ] || die "/usr/bin/python3 is missing (apt-get install python3-venv)"
+        /usr/bin/python3 -m venv "$HUB_VENV"
+        "$HUB_VENV/bin/pip" install --quiet --upgrade pip
+        # non-editable: the venv holds its own copy, so the checkout may stay private (0700)
+        "$HUB_VENV/bin/pip" install --quiet "$REPO" 'jupyterhub>=5,<7'
+        echo "$key" > "$HUB_VENV/.course-key"
+    fi
+    chown -R root:root "$HUB_VENV"; chmod -R go-w,go+rX "$HUB_VENV"   # read-only for every account
+}
+
+proxy() {  # configurable-http-proxy from npm, in a local prefix (deploy/jupyterhub/node/, gitignored)
+    [ -x "$HERE/node/node_modules/.bin/configurable-http-proxy" ] \
+        || npm install --silent --no-audit --no-fund --prefix "$HERE/node" configurable-http-proxy
+}
+
+accounts() {
+    local u
+    for u in ${HUB_INSTRUCTORS//,/ } ${HUB_STUDENTS//,/ }; do
+        id "$u" >/dev/null 2>&1 || useradd --create-home --shell /bin/bash "$u"
+        chmod 0700 "$(getent passwd "$u" | cut -d: -f6)"      # Debian's default 0755 lets classmates read
+        if [ -n "${HUB_PASSWORD:-}" ]; then echo "$u:$HUB_PASSWORD" | chpasswd; fi
+    done
+}
+
+copy_problems() {  # the problem packages assignments/<id>/ (symlinks kept) into $1, replacing old copies
+    /usr/bin/python3 - "$REPO/assignments" "$1" <<'PY'
+import shutil, sys
+from pathlib import Path
+src, dst = Path(sys.argv[1]), Path(sys.argv[2])
+for p in sorted(src.iterdir()):
+    if (p / "problem.yaml").is_file():
+        shutil.rmtree(dst / p.name, ignore_errors=True)
+        shutil.copytree(p, dst / p.name, symlinks=True, ignore=shutil.ignore_patterns(".cache", "__pycache__"))
+PY
+}
+
+course() {
+    local instr="${HUB_INSTRUCTORS%%,*}" role
+    mkdir -p "$COURSE_HOME" "$HUB_STATE" "$EXCHANGE"
+    chmod 0755 "$COURSE_HOME"; chmod 0700 "$HUB_STATE"
+    chmod 0777 "$EXCHANGE"                          # nbgrader: every account reads and writes the exchange
+    # problem packages without the nbgrader sources (they hold the solutions): readable by everyone
+    mkdir -p "$COURSE_HOME/problems"
+    copy_problems "$COURSE_HOME/problems"
+    chown -R root:root "$COURSE_HOME/problems"; chmod -R go-w,go+rX "$COURSE_HOME/problems"
+    # the instructor's course root: sources, gradebook, release/submitted/autograded/feedback
+    if [ ! -d "$COURSE_HOME/course" ]; then
+        mkdir -p "$COURSE_HOME/course"
+        cp -a "$REPO/assignments/source" "$REPO/assignments/nbgrader_config.py" "$COURSE_HOME/course/"
+    fi
+    copy_problems "$COURSE_HOME/course"
+    chown -R "$instr:" "$COURSE_HOME/course"; chmod 0700 "$COURSE_HOME/course"
+    for role in instructor student; do
+        mkdir -p "$COURSE_HOME/jupyter/$role/labconfig"
+        cat > "$COURSE_HOME/jupyter/$role/nbgrader_config.py" <<EOF
+# written by deploy/jupyterhub/deploy.sh: the course server's system nbgrader config ($role)
+c = get_config()  # noqa: F821
+c.CourseDirectory.course_id = "$COURSE_ID"
+c.Exchange.root = "$EXCHANGE"
+EOF
+    done
+    echo 'c.CourseDirectory.root = "'"$COURSE_HOME/course"'"' >> "$COURSE_HOME/jupyter/instructor/nbgrader_config.py"
+    cat > "$COURSE_HOME/jupyter/student/jupyter_server_config.json" <<'EOF'
+{"ServerApp": {"jpserver_extensions": {"nbgrader.server_extensions.formgrader": false,
+                                       "nbgrader.server_extensions.course_list": false}}}
+EOF
+    cat > "$COURSE_HOME/jupyter/student/labconfig/page_config.json" <<'EOF'
+{"disabledExtensions": {"@jupyter/nbgrader:formgrader": true, "@jupyter/nbgrader:course-list": true,
+                        "@jupyter/nbgrader:create-assignment": true,
+                        "@jupyterlab/apputils-extension:announcements": true}}
+EOF
+    echo '{"disabledExtensions": {"@jupyterlab/apputils-extension:announcements": true}}' \
+        > "$COURSE_HOME/jupyter/instructor/labconfig/page_config.json"
+    chmod -R go+rX "$COURSE_HOME/jupyter"
+}
+
+start() {
+    export PATH="$HUB_VENV/bin:$PATH"
+    export HUB_PROXY="$HERE/node/node_modules/.bin/configurable-http-proxy"
+    cd "$HUB_STATE"
+    exec "$HUB_VENV/bin/jupyterhub" -f "$HERE/jupyterhub_config.py"
+}
+
+down() {
+    local f
+    for f in "$HUB_STATE/jupyterhub.pid" "$HUB_STATE/proxy.pid"; do
+        [ -f "$f" ] && kill "$(cat "$f")" 2>/dev/null || true
+    done
+}
+
+case "${1:-}" in
+    install) venv; proxy; accounts; course; echo "installed under $COURSE_HOME (venv $HUB_VENV)";;
+    start) start;;
+    down) down;;
+    *) die "usage: deploy.sh install|start|down";;
+esac

@@ -1,0 +1,161 @@
+"""A running course hub for tests: deploy/jupyterhub/deploy.sh in a temp COURSE_HOME, and logged-in users.
+
+:func:`start_hub` installs the deployment (dummy authenticator, free ports, the shared venv in
+build/hub-venv) and starts JupyterHub in its own session; :meth:`Hub.stop` stops it, the proxy
+and every single-user server it started. :class:`HubUser` logs in through the hub's login form and
+calls what the Assignments tab and formgrader call (their HTTP APIs, with the server's XSRF cookie).
+
+Run by tests/hub/test_hub.py (as root); by hand:
+    .venv/bin/python -c "import sys; sys.path[:0]=['tests/hub']; import hub_session as h; hub=h.start_hub(); print(hub.url)"
+"""
+from __future__ import annotations
+
+import os
+import pwd
+import secrets
+import shutil
+import signal
+import socket
+import subprocess
+import tempfile
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import requests
+
+REPO = Path(__file__).resolve().parents[2]
+DEPLOY = REPO / "deploy" / "jupyterhub" / "deploy.sh"
+INSTRUCTOR = "hub-instructor"
+STUDENTS = ("hub-student1", "hub-student2")
+
+
+def can_run() -> str:
+    """'' when a hub can run here, else why not (the skip reason)."""
+    if os.geteuid() != 0:
+        return "the hub runs as root (it starts servers as other accounts); CI runs as root"
+    for tool in ("useradd", "npm", "/usr/bin/python3"):
+        if shutil.which(tool) is None:
+            return f"{tool} is missing"
+    return ""
+
+
+def _free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+@dataclass
+class Hub:
+    """A started hub: its URL, password, COURSE_HOME and process."""
+    url: str
+    password: str
+    home: Path
+    proc: subprocess.Popen
+    log: Path
+    env: dict = field(default_factory=dict)
+
+    def stop(self) -> None:
+        """SIGTERM the hub (it stops its servers and proxy), then kill what is left of its session
+        and of the hub-* accounts' processes it started; remove COURSE_HOME."""
+        if self.proc.poll() is None:
+            self.proc.terminate()
+            try:
+                self.proc.wait(30)
+            except subprocess.TimeoutExpired:
+                pass
+        try:
+            os.killpg(self.proc.pid, signal.SIGKILL)
+        except ProcessLookupError:
+            pass
+        uids = {pwd.getpwnam(u).pw_uid for u in (INSTRUCTOR, *STUDENTS)}
+        for p in Path("/proc").iterdir():
+            if p.name.isdigit():
+                try:
+                    if p.stat().st_uid in uids and str(self.home) in (p / "environ").read_text(errors="replace"):
+                        os.kill(int(p.name), signal.SIGKILL)
+                except (OSError, ProcessLookupError):
+                    pass
+        shutil.rmtree(self.home, ignore_errors=True)
+
+
+def start_hub(timeout: float = 240) -> Hub:
+    """Install the deployment into a fresh COURSE_HOME and start the hub; return when it answers."""
+    home = Path(tempfile.mkdtemp(prefix="course-hub-"))
+    os.chmod(home, 0o755)
+    port = _free_port()
+    password = secrets.token_urlsafe(12)
+    env = {**os.environ, "COURSE_HOME": str(home), "HUB_VENV": str(REPO / "build" / "hub-venv"),
+           "HUB_INSTRUCTORS": INSTRUCTOR, "HUB_STUDENTS": ",".join(STUDENTS), "HUB_AUTH": "dummy",
+           "HUB_DUMMY_PASSWORD": password, "HUB_PORT": str(port), "HUB_API_PORT": str(_free_port()),
+           "HUB_PROXY_API_PORT": str(_free_port())}
+    subprocess.run([str(DEPLOY), "install"], env=env, check=True, timeout=900)
+    for u in STUDENTS:  # a fresh class: no assignment fetched by an earlier run
+        h = Path(pwd.getpwnam(u).pw_dir)
+        for d in ("delaunay", "closest-pair"):
+            shutil.rmtree(h / d, ignore_errors=True)
+    log = home / "hub.log"
+    with open(log, "w") as f:
+        proc = subprocess.Popen([str(DEPLOY), "start"], env=env, stdout=f, stderr=subprocess.STDOUT,
+                                stdin=subprocess.DEVNULL, start_new_session=True)
+    hub = Hub(f"http://127.0.0.1:{port}", password, home, proc, log, env)
+    deadline = time.monotonic() + timeout
+    while time.monotonic() < deadline:
+        if proc.poll() is not None:
+            raise RuntimeError("the hub exited:\n" + log.read_text()[-3000:])
+        try:
+            if requests.get(hub.url + "/hub/api", timeout=5).ok:
+                return hub
+        except requests.ConnectionError:
+            pass
+        time.sleep(0.5)
+    hub.stop()
+    raise RuntimeError("the hub did not answer:\n" + log.read_text()[-3000:])
+
+
+class HubUser:
+    """One account logged in to ``hub``, with its single-user server started."""
+
+    def __init__(self, hub: Hub, name: str):
+        self.hub, self.name = hub, name
+        self.s = requests.Session()
+        form = self.s.get(hub.url + "/hub/login", timeout=30)
+        xsrf = self.s.cookies.get("_xsrf", path="/hub/") or form.text.split('name="_xsrf" value="')[1].split('"')[0]
+        r = self.s.post(hub.url + "/hub/login", data={"username": name, "password": hub.password, "_xsrf": xsrf},
+                        timeout=30)
+        r.raise_for_status()
+        self.base = f"{hub.url}/user/{name}"
+        self.s.get(hub.url + "/hub/spawn", timeout=150)
+        deadline = time.monotonic() + 150
+        while True:  # the server's page, through the hub's OAuth (sets the server's _xsrf cookie)
+            r = self.s.get(self.base + "/lab", timeout=60)
+            if r.ok and r.url.startswith(self.base + "/lab"):
+                break
+            if time.monotonic() > deadline:
+                raise RuntimeError(f"{name}'s server did not start: {r.status_code} {r.url}\n" + hub.log.read_text()[-3000:])
+            time.sleep(1)
+        self.xsrf = self.s.cookies.get("_xsrf", path=f"/user/{name}/")
+
+    def call(self, method: str, path: str, **kw) -> requests.Response:
+        """``method`` on the user's server at ``path`` (XSRF header added); raises on HTTP errors."""
+        r = self.s.request(method, self.base + path, headers={"X-XSRFToken": self.xsrf}, timeout=600, **kw)
+        r.raise_for_status()
+        return r
+
+    def formgrader(self, path: str) -> dict:
+        """POST to formgrader's API (what its buttons do); the JSON answer, which must say success."""
+        out = self.call("POST", "/formgrader/api/" + path).json()
+        if not out.get("success", True):
+            raise AssertionError(f"formgrader {path}: {out.get('error') or out.get('log')}")
+        return out
+
+    def assignments(self, action: str = "", **data) -> list | dict:
+        """The Assignments tab's API: list (no action), or fetch / submit / fetch_feedback."""
+        if not action:
+            out = self.call("GET", "/assignments", params={"course_id": "delaunay-course"}).json()
+        else:
+            out = self.call("POST", "/assignments/" + action, data={"course_id": "delaunay-course", **data}).json()
+        if not out.get("success"):
+            raise AssertionError(f"{self.name}: assignments {action or 'list'}: {out.get('value') or out}")
+        return out["value"]
