@@ -26,8 +26,9 @@ import requests
 
 REPO = Path(__file__).resolve().parents[2]
 DEPLOY = REPO / "deploy" / "jupyterhub" / "deploy.sh"
-INSTRUCTOR = "hub-instructor"
-STUDENTS = ("hub-student1", "hub-student2")
+# test accounts of their own (not make hub's hub-*): the test empties their homes before it starts
+INSTRUCTOR = "hubtest-instructor"
+STUDENTS = ("hubtest-student1", "hubtest-student2")
 
 
 def can_run() -> str:
@@ -58,7 +59,7 @@ class Hub:
 
     def stop(self) -> None:
         """SIGTERM the hub (it stops its servers and proxy), then kill what is left of its session
-        and of the hub-* accounts' processes it started; remove COURSE_HOME."""
+        and of the test accounts' processes it started; remove COURSE_HOME."""
         if self.proc.poll() is None:
             self.proc.terminate()
             try:
@@ -91,10 +92,16 @@ def start_hub(timeout: float = 240) -> Hub:
            "HUB_DUMMY_PASSWORD": password, "HUB_PORT": str(port), "HUB_API_PORT": str(_free_port()),
            "HUB_PROXY_API_PORT": str(_free_port())}
     subprocess.run([str(DEPLOY), "install"], env=env, check=True, timeout=900)
-    for u in STUDENTS:  # a fresh class: no assignment fetched by an earlier run
+    for u in (INSTRUCTOR, *STUDENTS):
+        # a fresh class: nothing fetched, submitted or cached by an earlier run (nbgrader lists an
+        # assignment as "submitted" from the student's own nbgrader_cache under ~/.local)
         h = Path(pwd.getpwnam(u).pw_dir)
-        for d in ("delaunay", "closest-pair"):
-            shutil.rmtree(h / d, ignore_errors=True)
+        if h.name == u and h.parent == Path("/home"):
+            for entry in h.iterdir():
+                if entry.is_dir() and not entry.is_symlink():
+                    shutil.rmtree(entry, ignore_errors=True)
+                else:
+                    entry.unlink(missing_ok=True)
     log = home / "hub.log"
     with open(log, "w") as f:
         proc = subprocess.Popen([str(DEPLOY), "start"], env=env, stdout=f, stderr=subprocess.STDOUT,

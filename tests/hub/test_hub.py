@@ -28,8 +28,8 @@ pytestmark = [pytest.mark.xdist_group("hub"),
 
 REPO = hs.REPO
 SOLUTIONS = {  # student -> problem -> the solution they write
-    "hub-student1": {"delaunay": "accepted_walk.py", "closest-pair": "accepted_sweep.py"},
-    "hub-student2": {"delaunay": "wrong_prefix_collinear.py", "closest-pair": "wrong_x_neighbours.py"},
+    "hubtest-student1": {"delaunay": "accepted_walk.py", "closest-pair": "accepted_sweep.py"},
+    "hubtest-student2": {"delaunay": "wrong_prefix_collinear.py", "closest-pair": "wrong_x_neighbours.py"},
 }
 PROBLEMS = ("delaunay", "closest-pair")
 
@@ -88,7 +88,7 @@ def test_scores_equal_the_judge(graded, hub):
         for a in PROBLEMS:
             nb = course / "submitted" / name / a / f"{a}.ipynb"
             assert scores[name][a] == pytest.approx(_judge(a, nb)), (name, a)
-    assert scores["hub-student1"]["delaunay"] > scores["hub-student2"]["delaunay"]
+    assert scores["hubtest-student1"]["delaunay"] > scores["hubtest-student2"]["delaunay"]
 
 
 def test_students_fetch_their_feedback(graded):
@@ -111,7 +111,7 @@ def _as(user: str, code: str) -> subprocess.CompletedProcess:
 
 
 def test_isolation_between_students(graded, hub):
-    other = pwd.getpwnam("hub-student1").pw_dir
+    other = pwd.getpwnam("hubtest-student1").pw_dir
     inbound = hub.home / "exchange" / "delaunay-course" / "inbound"
     probe = f"""
 import os, glob
@@ -129,9 +129,9 @@ except OSError:
 leaks += glob.glob({str(inbound)!r} + "/*/*.ipynb")
 print(leaks)
 """
-    r = _as("hub-student2", probe)
+    r = _as("hubtest-student2", probe)
     assert r.returncode == 0, r.stderr
     assert r.stdout.strip() == "[]", r.stdout
     # the probe is real: the owner reads their own notebook
-    mine = _as("hub-student1", f"print(len(open({other!r} + '/delaunay/delaunay.ipynb').read()) > 0)")
+    mine = _as("hubtest-student1", f"print(len(open({other!r} + '/delaunay/delaunay.ipynb').read()) > 0)")
     assert mine.stdout.strip() == "True", mine.stderr
