@@ -12,7 +12,10 @@ and the score is the sum over groups. Each ``data/secret/NN-<group>/testdata.yam
 ``accept_score: <points>`` with the ``min`` aggregation (all tests must pass) and stops at the
 first failure; ``data/secret/testdata.yaml`` sums the groups and accepts a submission that
 passes at least one (``accept_if_any_accepted``), so a partly correct submission is AC with a
-partial score, as on Kattis; the samples score nothing (``ignore_sample`` at the top).
+partial score, as on Kattis; a submission that passes none gets the verdict of its first failing
+group (``first_error``, the judge's own rule), so a wrong answer killed fast by an early group is
+WA even when a later, large test runs near the time limit (problemtools' default, ``worst_error``,
+would let that test's TLE decide, and placement would depend on timing); the samples score nothing (``ignore_sample`` at the top).
 A reference solution that scores part of the points goes to ``submissions/partially_accepted``;
 where each goes is decided by judging it on the exported groups (``judge=False``: by its
 expected verdict only).
@@ -174,7 +177,7 @@ def export(problem: Problem | str, outdir: str | Path, groups: list[str] | None 
     _testdata(data, on_reject="continue", grader_flags="ignore_sample")
     _testdata(data / "sample", on_reject="continue", grader_flags="sum", accept_score=0, range="0 0")
     total = sum(g.points for g, _ in chosen)
-    _testdata(data / "secret", on_reject="continue", grader_flags="sum accept_if_any_accepted", range=f"0 {total}")
+    _testdata(data / "secret", on_reject="continue", grader_flags="sum accept_if_any_accepted first_error", range=f"0 {total}")
     for g, _ in chosen:
         _testdata(data / "secret" / group_dirname(p, g.name), on_reject="break", grader_flags="min",
                   accept_score=g.points, range=f"0 {g.points}")
