@@ -116,8 +116,8 @@ def placements(p: Problem, judge: bool = True, partial: bool = False) -> dict[st
     With ``judge`` the non-AC solutions are judged on those tests: full marks -> ``ValueError``
     (the package cannot tell it from a correct one), or, when only some groups are exported
     (``partial``), the solution is left out with a note on stderr (the group that kills it was not
-    exported); part -> ``partially_accepted``, none -> the directory of the worst failure, ranked
-    as problemtools' default grader does."""
+    exported); part -> ``partially_accepted``, none -> the directory of the first failure's
+    verdict in the judge's order (``first_error`` in ``data/secret``)."""
     out = {}
     for name, verdict in expected_verdicts(p.id).items():
         src = REPO / "solutions" / p.id / name
@@ -140,9 +140,8 @@ def placements(p: Problem, judge: bool = True, partial: bool = False) -> dict[st
         if result.score > 0:
             out[name] = "partially_accepted"
         else:
-            dirs = {KATTIS_DIRS.get(str(t.verdict), "wrong_answer") for t in result.tests
-                    if str(t.verdict) not in ("AC", "--")}
-            out[name] = next(d for d in KATTIS_ORDER if d in dirs)
+            # the first failure's verdict: what data/secret's first_error aggregation reports
+            out[name] = KATTIS_DIRS.get(str(result.verdict), "wrong_answer")
     return out
 
 
