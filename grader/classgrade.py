@@ -283,7 +283,8 @@ def grade_class(problem: str, root: str | Path, db_path: str | Path, jobs: int =
     if rejudged:
         print(f"{problem}: {len(rejudged)} submissions judged again: the problem's tests or points changed since "
               "they were graded", file=sys.stderr)
-    summaries = [{"student": j.student, "skipped": "already graded"} for j in todo_all if j not in todo]
+    latest = store.latest(problem)
+    summaries = [_graded_summary(j.student, latest.get(j.student), max_score) for j in todo_all if j not in todo]
     summaries += [{"student": st, "verdict": "", "score": 0, "max_score": max_score, "skipped": NO_SUBMISSION}
                   for st in empty]
     hide = tuple(str(Path(p).resolve()) for p in (root, Path(db_path).parent, report_dir) if p)
@@ -343,6 +344,15 @@ def grade_class(problem: str, root: str | Path, db_path: str | Path, jobs: int =
         write_index(Path(report_dir), problem, store, empty)
     store.close()
     return summaries
+
+
+def _graded_summary(student: str, row, max_score: int) -> dict:
+    """The summary of a student graded in an earlier run: the stored verdict and score (late factor applied)."""
+    if row is None:
+        return {"student": student, "skipped": "already graded"}
+    mult = 1.0 if row["multiplier"] is None else row["multiplier"]
+    return {"student": student, "verdict": row["verdict"], "score": round(row["score"] * mult, 2),
+            "max_score": row["max_score"] or max_score, "skipped": "already graded"}
 
 
 def _rebuild_missing_reports(spec, jobs: list[Job], store: ResultStore, report_dir: Path) -> int:

@@ -12,7 +12,10 @@ and the score is the sum over groups. Each ``data/secret/NN-<group>/testdata.yam
 ``accept_score: <points>`` with the ``min`` aggregation (all tests must pass) and stops at the
 first failure; ``data/secret/testdata.yaml`` sums the groups and accepts a submission that
 passes at least one (``accept_if_any_accepted``), so a partly correct submission is AC with a
-partial score, as on Kattis; the samples score nothing (``ignore_sample`` at the top).
+partial score, as on Kattis; a submission that passes none gets the verdict of its first failing
+group (``first_error``, the judge's own rule), so a wrong answer killed fast by an early group is
+WA even when a later, large test runs near the time limit (problemtools' default, ``worst_error``,
+would let that test's TLE decide, and placement would depend on timing); the samples score nothing (``ignore_sample`` at the top).
 A reference solution that scores part of the points goes to ``submissions/partially_accepted``;
 where each goes is decided by judging it on the exported groups (``judge=False``: by its
 expected verdict only).
@@ -113,8 +116,8 @@ def placements(p: Problem, judge: bool = True, partial: bool = False) -> dict[st
     With ``judge`` the non-AC solutions are judged on those tests: full marks -> ``ValueError``
     (the package cannot tell it from a correct one), or, when only some groups are exported
     (``partial``), the solution is left out with a note on stderr (the group that kills it was not
-    exported); part -> ``partially_accepted``, none -> the directory of the worst failure, ranked
-    as problemtools' default grader does."""
+    exported); part -> ``partially_accepted``, none -> the directory of the first failure's
+    verdict in the judge's order (``first_error`` in ``data/secret``)."""
     out = {}
     for name, verdict in expected_verdicts(p.id).items():
         src = REPO / "solutions" / p.id / name
@@ -137,9 +140,8 @@ def placements(p: Problem, judge: bool = True, partial: bool = False) -> dict[st
         if result.score > 0:
             out[name] = "partially_accepted"
         else:
-            dirs = {KATTIS_DIRS.get(str(t.verdict), "wrong_answer") for t in result.tests
-                    if str(t.verdict) not in ("AC", "--")}
-            out[name] = next(d for d in KATTIS_ORDER if d in dirs)
+            # the first failure's verdict: what data/secret's first_error aggregation reports
+            out[name] = KATTIS_DIRS.get(str(result.verdict), "wrong_answer")
     return out
 
 
@@ -174,7 +176,7 @@ def export(problem: Problem | str, outdir: str | Path, groups: list[str] | None 
     _testdata(data, on_reject="continue", grader_flags="ignore_sample")
     _testdata(data / "sample", on_reject="continue", grader_flags="sum", accept_score=0, range="0 0")
     total = sum(g.points for g, _ in chosen)
-    _testdata(data / "secret", on_reject="continue", grader_flags="sum accept_if_any_accepted", range=f"0 {total}")
+    _testdata(data / "secret", on_reject="continue", grader_flags="sum accept_if_any_accepted first_error", range=f"0 {total}")
     for g, _ in chosen:
         _testdata(data / "secret" / group_dirname(p, g.name), on_reject="break", grader_flags="min",
                   accept_score=g.points, range=f"0 {g.points}")

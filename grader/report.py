@@ -99,10 +99,12 @@ def caption(name: str, message: str) -> str:
 
 
 def _picture(problem: Problem, result: JudgeResult) -> str:
-    bad = next((t for t in result.tests if t.verdict == Verdict.WA and t.received is not None), None)
+    bad = next((t for t in result.tests if t.verdict not in (Verdict.AC, Verdict.SKIPPED)), None)
     draw = getattr(problem.checker, "draw", None)
-    if bad is None or draw is None:
+    if bad is None:
         return ""
+    if bad.verdict != Verdict.WA or bad.received is None or draw is None:  # the judge's first failure, no picture
+        return f"<h2>First failing test: {html.escape(bad.name)} ({bad.verdict})</h2>"
     test = next(t for t in problem.tests() if t.name == bad.name)
     args = problem.checker.read_input(test.input_text)
     if len(args[0]) > MAX_DRAW_POINTS:
@@ -195,6 +197,17 @@ def write_report(result: JudgeResult, path: str | Path, problem: Problem, studen
     return path
 
 
+def _test_order(problem: str):
+    """Sort key for test names ``group/NN``: the problem's group order (as the judge runs them), then name."""
+    try:
+        from .problems import load_problem
+
+        order = [g.name for g in load_problem(problem).groups]
+    except ValueError:
+        order = []
+    return lambda n: (order.index(n.split("/")[0]) if n.split("/")[0] in order else len(order), n)
+
+
 def write_index(report_dir: Path, problem: str, store, no_submission: list[str] = ()) -> Path:
     """``report_dir/index.html``: every student of ``problem`` in the store, with verdict, score,
     a link to their report, and the verdict of each test (plus the folders without a submission)."""
@@ -206,6 +219,7 @@ def write_index(report_dir: Path, problem: str, store, no_submission: list[str] 
                                 (student, problem, s["sha"])).fetchall()
         tests[student] = dict(rows)
         names += [t for t, _ in rows if t not in names]
+    names.sort(key=_test_order(problem))
     head = "".join(f"<th>{html.escape(n)}</th>" for n in names)
     body = []
     for student in sorted({*latest, *no_submission}):

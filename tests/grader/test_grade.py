@@ -168,3 +168,14 @@ def test_live_progress_names_who_is_judged(tmp_path, fixture_problems):
     bar = Progress(2, stream=out, tests_per_student=3)
     bar.poll(store, "p", {"ada": "s1", "bob": "s2"}, set())
     assert "judging ada 2/3" in out.getvalue() and "tests 2/6" in out.getvalue()
+
+
+def test_already_graded_students_keep_their_stored_score():
+    """After a resume the table shows a student graded earlier with the stored verdict and the
+    late-adjusted score, not an empty row."""
+    from grader.classgrade import _graded_summary
+
+    row = {"verdict": "WA", "score": 40, "max_score": 100, "multiplier": 0.5}
+    assert _graded_summary("ann", row, 100) == {"student": "ann", "verdict": "WA", "score": 20.0,
+                                                "max_score": 100, "skipped": "already graded"}
+    assert _graded_summary("bob", None, 100)["skipped"] == "already graded"

@@ -68,3 +68,19 @@ def test_a_forged_huge_answer_is_drawn_bounded(monkeypatch):
     page = report.render(_result(huge, "the directed edge 0->1 is used by 2000000 triangles"), PROBLEM)
     assert drawn == [report.MAX_DRAW_ITEMS] and "data:image/png" in page
     assert len(page) < 1_000_000 and f"{2_000_000 - report.MAX_DRAW_ITEMS:,} elements of the received answer not drawn" in page
+
+
+def test_first_failing_test_is_the_judges_first_failure_and_columns_follow_group_order():
+    """The heading names the first failure in the judge's order (a TLE here), not a later WA
+    that has a stored answer; index columns sort by the problem's group order, not alphabetically."""
+    from grader.problems import load_problem
+
+    p = load_problem("delaunay")
+    tests = [TestResult("tiny/01", "tiny", Verdict.AC, 0.1, 1, ""),
+             TestResult("degenerate/03", "degenerate", Verdict.TLE, 6.0, 1, "time limit"),
+             TestResult("medium/01", "medium", Verdict.WA, 0.1, 1, "wrong", received=[[0, 1, 2]])]
+    page = report.render(JudgeResult(p.id, "x.py", tests, p.group_points), p)
+    assert "First failing test: degenerate/03 (TLE)" in page and "First failing test: medium/01" not in page
+    order = [g.name for g in p.groups]
+    names = sorted(["tiny/02", "degenerate/01", "sample/01", "large/01", "exhaustive/01"], key=report._test_order(p.id))
+    assert [n.split("/")[0] for n in names] == [g for g in order if g in {n.split("/")[0] for n in names}]
