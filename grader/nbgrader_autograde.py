@@ -44,7 +44,7 @@ from .course_notebooks import CHECK_ID, group_cell_id
 from .sample_check import is_sample_group
 from .jail import require_jail
 from .judge import Judge
-from .problems import Problem, load_problem
+from .problems import Problem, check_course, course_folder, load_problem, problems_root, using_course
 from .store import ResultStore
 from .submissions import Submission, SubmissionError
 from .verdicts import DESCRIPTIONS, JudgeResult, TestResult, Verdict
@@ -64,9 +64,17 @@ def mask_numbers(message: str) -> str:
 
 
 def _problem(problem_id: str) -> Problem:
-    if problem_id not in _problems:
-        _problems[problem_id] = load_problem(problem_id)
-    return _problems[problem_id]
+    key = f"{problems_root().resolve()}\0{problem_id}"
+    if key not in _problems:
+        _problems[key] = load_problem(problem_id)
+    return _problems[key]
+
+
+def nbgrader_course_root(config) -> Path:
+    """nbgrader's course folder under ``config`` (``CourseDirectory.root``, nbgrader's default: the
+    current directory)."""
+    root = config.get("CourseDirectory", {}).get("root") if config is not None else None
+    return Path(root or os.getcwd()).resolve()
 
 
 def code_key(problem: Problem, source: str) -> str:
@@ -174,6 +182,7 @@ class JudgeCells(NbGraderPreprocessor):
     def preprocess(self, nb, resources):
         require_jail()  # never a silent downgrade: no kernel jail, no grading (the message names the fixes)
         info = resources["nbgrader"]
+        check_course(nbgrader_course_root(self.config), info["notebook"])  # the judge's problems = nbgrader's course
         problem = _problem(info["notebook"])
         store_path = self._store_path(resources)
         with tempfile.TemporaryDirectory(prefix="nbgrader-judge-") as tmp:
@@ -228,17 +237,23 @@ class CourseLatePolicy(LateSubmissionPlugin):
 
 
 def set_exam_deadline(course_root: Path, problem_id: str, start: datetime) -> datetime:
-    """Create/update the nbgrader assignment of a timed problem with due date = start + its duration."""
+    """Create/update the nbgrader assignment of a timed problem in ``course_root/gradebook.db``,
+    with due date = start + its duration (from that course's own ``<id>/course.yaml``).
+
+    ``ValueError`` when the judge's problems are not that course's (:func:`grader.problems.check_course`)."""
     from nbgrader.api import Gradebook
 
     from .timed import _settings
 
-    if not _problem(problem_id).timed:
-        raise ValueError(f"problem {problem_id!r} is not timed (no 'timed' section in its course.yaml)")
+    with using_course(course_root, problem_id) as course_root:
+        if not _problem(problem_id).timed:
+            raise ValueError(f"problem {problem_id!r} is not timed (no 'timed' section in its course.yaml)")
+        minutes = float(_settings(problem_id)["duration_min"])
     if start.tzinfo is None:
         start = start.replace(tzinfo=timezone.utc)
-    due = start + timedelta(minutes=float(_settings(problem_id)["duration_min"]))
-    with Gradebook(f"sqlite:///{Path(course_root).resolve() / 'gradebook.db'}") as gb:
+    due = start + timedelta(minutes=minutes)
+    os.environ["PATH"] = nbgrader_env()["PATH"]  # a new gradebook runs `alembic` from PATH
+    with Gradebook(f"sqlite:///{course_root / 'gradebook.db'}") as gb:
         gb.update_or_create_assignment(problem_id, duedate=due.astimezone(timezone.utc).replace(tzinfo=None))
     return due
 
@@ -276,9 +291,13 @@ def grade_course(problem_id: str, submitted: str | Path, jobs: int = 1, autograd
     gradebook entries, autograded notebooks and late penalties as a one-by-one run)."""
     require_jail()
     submitted = Path(submitted).resolve()
-    course_root = submitted.parent
     if not submitted.is_dir():
         raise ValueError(f"{submitted} is not a directory (expected nbgrader's submitted/<student>/{problem_id}/)")
+    with using_course(submitted.parent, problem_id) as course_root:  # the course that submitted/ belongs to
+        return _grade_course(problem_id, submitted, course_root, jobs, autograde)
+
+
+def _grade_course(problem_id: str, submitted: Path, course_root: Path, jobs: int, autograde: bool) -> list[dict]:
     problem = _problem(problem_id)
     problem.tests()  # materialise the hidden tests once, before the workers start
     store_path = course_root / STORE_NAME
@@ -299,7 +318,9 @@ def grade_course(problem_id: str, submitted: str | Path, jobs: int = 1, autograd
 
 
 def main(argv: list[str] | None = None) -> int:
-    """``python -m grader.nbgrader_autograde deadline PROBLEM START`` (ISO time, UTC if no zone)."""
+    """``python -m grader.nbgrader_autograde deadline PROBLEM START [--course DIR]`` (ISO time, UTC if
+    no zone). The course is the one you are in (the folder with ``nbgrader_config.py``, or its
+    ``assignments/``), as for nbgrader; the command prints which gradebook it wrote."""
     import argparse
 
     ap = argparse.ArgumentParser(prog="python -m grader.nbgrader_autograde")
@@ -307,14 +328,18 @@ def main(argv: list[str] | None = None) -> int:
     p = sub.add_parser("deadline", help="set a timed assignment's due date to START + its duration")
     p.add_argument("problem")
     p.add_argument("start", help="exam start, ISO 8601 (e.g. 2026-12-01T09:00:00+00:00)")
-    p.add_argument("--course", default=str(Path(__file__).resolve().parent.parent / "assignments"))
+    p.add_argument("--course", help="the nbgrader course folder (default: the one you are in)")
     a = ap.parse_args(argv)
     try:
-        due = set_exam_deadline(Path(a.course), a.problem, datetime.fromisoformat(a.start))
+        course = Path(a.course) if a.course else course_folder()
+        if course is None:
+            raise ValueError(f"no nbgrader course here: {Path.cwd()} holds no nbgrader_config.py (nor its assignments/); "
+                             "cd into the course folder or pass --course DIR")
+        due = set_exam_deadline(course, a.problem, datetime.fromisoformat(a.start))
     except ValueError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
-    print(f"{a.problem}: due {due.isoformat()}")
+    print(f"{a.problem}: due {due.isoformat()} (in {Path(course).resolve() / 'gradebook.db'})")
     return 0
 
 

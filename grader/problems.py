@@ -22,6 +22,8 @@ import shutil
 import subprocess
 import sys
 import tempfile
+from collections.abc import Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 from functools import cached_property
 from pathlib import Path
@@ -37,9 +39,92 @@ REPO = Path(__file__).resolve().parent.parent
 ALWAYS_FORBIDDEN = ("reference_impl", "grader")
 
 
+COURSE_CONFIG = "nbgrader_config.py"
+
+
+def _holds_problems(folder: Path) -> bool:
+    return folder.is_dir() and any((d / "problem.yaml").is_file() and (d / "course.yaml").is_file()
+                                   for d in folder.iterdir())
+
+
+def course_folder(start: str | Path | None = None) -> Path | None:
+    """The nbgrader course folder a command run in ``start`` (default: the current directory) acts on.
+
+    nbgrader's own rule: the folder you are in, holding ``nbgrader_config.py``. From the folder
+    above it (a checkout or a copy of the course), its ``assignments/``. None when neither holds one.
+
+    >>> course_folder(REPO) == REPO / "assignments"
+    True
+    """
+    start = Path(start) if start is not None else Path.cwd()
+    for folder in (start, start / "assignments"):
+        if (folder / COURSE_CONFIG).is_file():
+            return folder.resolve()
+    return None
+
+
 def problems_root() -> Path:
-    """Where problems live: ``$GRADER_PROBLEMS`` or ``<checkout>/assignments``."""
-    return Path(os.environ.get("GRADER_PROBLEMS", REPO / "assignments"))
+    """Where problems live: ``$GRADER_PROBLEMS``; else the course folder the user is in
+    (:func:`course_folder`) when it holds problem packages; else ``<checkout>/assignments``.
+
+    >>> problems_root() == (course_folder() or REPO / "assignments")  # in a checkout or a course copy
+    True
+    """
+    if os.environ.get("GRADER_PROBLEMS"):
+        return Path(os.environ["GRADER_PROBLEMS"])
+    here = course_folder()
+    if here is not None and _holds_problems(here):
+        return here
+    return REPO / "assignments"
+
+
+@contextmanager
+def using_course(course_root: str | Path, problem_id: str | None = None) -> Iterator[Path]:
+    """Within the block, the judge reads problems from the nbgrader course ``course_root`` that a
+    command names (``--course``, a ``submitted/`` folder), unless ``$GRADER_PROBLEMS`` already says
+    where; then :func:`check_course` refuses a mismatch. Yields the course folder, resolved.
+
+    >>> with using_course(REPO / "assignments", "delaunay") as course:
+    ...     problems_root().resolve() == course
+    True
+    """
+    course = Path(course_root).resolve()
+    saved = os.environ.get("GRADER_PROBLEMS")
+    if not saved:
+        os.environ["GRADER_PROBLEMS"] = str(course)
+    try:
+        yield check_course(course, problem_id)
+    finally:
+        if saved is None:
+            os.environ.pop("GRADER_PROBLEMS", None)
+        else:
+            os.environ["GRADER_PROBLEMS"] = saved
+
+
+def check_course(course_root: str | Path, problem_id: str | None = None) -> Path:
+    """Refuse a mismatch between nbgrader's course folder and the judge's problems.
+
+    The judge reads a problem's tests and points from :func:`problems_root`; nbgrader reads
+    notebooks and the gradebook from ``course_root``. They must be the same folder (and hold
+    ``problem_id``), else ``ValueError`` says which two folders differ and how to fix it.
+    Returns the course folder, resolved.
+
+    >>> check_course(REPO / "assignments", "delaunay") == (REPO / "assignments").resolve()
+    True
+    """
+    course = Path(course_root).resolve()
+    judged = problems_root().resolve()
+    if judged != course:
+        why = ("$GRADER_PROBLEMS points there" if os.environ.get("GRADER_PROBLEMS")
+               else f"{course} holds no problem package" if not _holds_problems(course)
+               else "that is the course folder of the current directory")
+        raise ValueError(f"the judge would read problems from {judged} ({why}) but nbgrader's course is {course}: "
+                         f"run the command in {course} (cd there), copy the problem packages "
+                         f"(assignments/<id>/) into it, or set GRADER_PROBLEMS={course}")
+    if problem_id is not None and not (course / problem_id / "problem.yaml").is_file():
+        raise ValueError(f"nbgrader's course {course} has no problem package {problem_id!r} "
+                         f"(expected {course / problem_id / 'problem.yaml'}); copy assignments/{problem_id}/ into it")
+    return course
 
 
 def cache_root() -> Path:

@@ -113,11 +113,13 @@ class Course:
 
 
 def make_course(tmp: Path, problem_id: str) -> Course:
-    """A course root in ``tmp`` (this repo's config and one source notebook), generated and released."""
+    """A course root in ``tmp`` (this repo's config, one source notebook and its problem package),
+    generated and released."""
     root = tmp / "course"
     (root / "source").mkdir(parents=True)
     shutil.copy(REPO / "assignments" / "nbgrader_config.py", root)
     shutil.copytree(REPO / "assignments" / "source" / problem_id, root / "source" / problem_id)
+    (root / problem_id).symlink_to(REPO / "assignments" / problem_id)  # the judge reads the course's own package
     exchange = tmp / "exchange"
     exchange.mkdir(mode=0o777)
     course = Course(root, exchange)
