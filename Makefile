@@ -1,7 +1,7 @@
 # The course's two commands (see README.md):
 #   make demo   set everything up, then run the headless tour of the course
 #   make test   set everything up, then run the whole test suite
-# Other targets: make lab (open the lessons in JupyterLab), make bench, make setup, make warm, make clean,
+# Other targets: make lab (open the lessons in JupyterLab), make instructor (formgrader, in assignments/), make bench, make setup, make warm, make clean,
 #   make hub / make hub-down (the course on JupyterHub with an instructor and three students, as root).
 
 PYTHON ?= python3
@@ -10,7 +10,7 @@ PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed
 LAB_OVERRIDES := $(VENV)/share/jupyter/lab/settings/overrides.json
 
-.PHONY: setup warm demo test lab bench clean chromium bubblewrap hub hub-install hub-down
+.PHONY: setup warm demo test lab instructor bench clean chromium bubblewrap hub hub-install hub-down
 
 setup: $(STAMP) $(LAB_OVERRIDES)
 
@@ -64,6 +64,12 @@ bubblewrap:
 
 lab: warm $(LAB_OVERRIDES)
 	$(VENV)/bin/jupyter lab $(LAB_ROOT) $(LAB_ARGS) notebooks
+
+# The instructor's JupyterLab: started in the course folder (assignments/), where formgrader finds
+# nbgrader_config.py and the gradebook (started anywhere else it shows "No data available"), with
+# the venv's bin/ on PATH (nbgrader calls alembic).
+instructor: warm $(LAB_OVERRIDES)
+	cd assignments && PATH="$(abspath $(VENV))/bin:$$PATH" "$(abspath $(VENV))/bin/jupyter" lab $(LAB_ROOT) $(LAB_ARGS)
 
 bench: warm
 	$(PY) benchmarks/bench_delaunay.py
