@@ -125,11 +125,40 @@ def _code(cell_id: str, text: str, **meta) -> nbformat.NotebookNode:
     return nbformat.v4.new_code_cell(text, id=cell_id.replace("_", "-"), metadata=_meta(cell_id, **meta))
 
 
+def course_statement(problem: Problem, statement: str) -> str:
+    """The statement as the nbgrader course gives it: for a timed problem, the clock is the due date.
+
+    The problem package's statement tells a student on their own to start the clock with
+    ``python -m grader timed start``; in the nbgrader course the instructor's due date is the clock
+    (``python -m grader.nbgrader_autograde deadline``) and nbgrader records the submission time.
+
+    >>> text = course_statement(load_problem("bowyer-watson-timed"),
+    ...     (load_problem("bowyer-watson-timed").path / "statement" / "problem.en.md").read_text())
+    >>> "timed start" in text, "due date" in text
+    (False, True)
+    """
+    if not problem.timed:
+        return statement
+    t = problem.timed
+    minutes = t.get("duration_min", 30)
+    paragraphs = statement.split("\n\n")
+    for k, para in enumerate(paragraphs):
+        if "timed start" in para and not para.lstrip().startswith(("-", "#")):
+            paragraphs[k] = (f"A timed exercise: implement `{problem.entry}` and submit this notebook before the "
+                             f"**due date** your instructor set ({minutes} minutes from the exam's start; the "
+                             f"Assignments tab shows it). nbgrader records when you submit; your last "
+                             f"submission counts.")
+    text = "\n\n".join(paragraphs)
+    return re.sub(r"\d+ minutes from `timed start` \(plus (\d+) s grace\)",
+                  lambda m: f"due {minutes} minutes after the exam's start (plus {m.group(1)} s grace)",
+                  text)
+
+
 def build_notebook(problem: Problem, solutions: Path = SOLUTIONS) -> nbformat.NotebookNode:
     """The source notebook of ``problem`` (see the module docstring)."""
     ref = strip_main_guard(reference_solution(problem, solutions).read_text())
     signature = entry_signature(ref, problem.entry)
-    statement = (problem.path / "statement" / "problem.en.md").read_text().strip()
+    statement = course_statement(problem, (problem.path / "statement" / "problem.en.md").read_text().strip())
     scored = scored_groups(problem)
     rows = "\n".join(f"| `{g.name}` | {g.points} | {group_test_count(problem, g)} | "
                      f"{'public (below)' if is_sample_group(g) else 'hidden'} |" for g in problem.groups)
@@ -148,7 +177,9 @@ Points are per group: a group earns its points only when every one of its tests 
 {rows}
 
 The autograded cells at the end show each group's verdict after grading. Running them yourself
-does nothing: the hidden tests stay with the grader."""
+does nothing: the hidden tests stay with the grader. For the same reason `nbgrader validate` (the
+Assignments tab's *Validate* button) says "Success" for any notebook that runs: it checks that the
+cells run, not that your code is right. The check that means something is the sample check below."""
     check = """## Check on the samples
 
 Save the notebook first (Ctrl+S): the next cell judges the code cells of the saved file, the same

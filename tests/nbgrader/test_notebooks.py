@@ -15,9 +15,10 @@ from pathlib import Path
 import nbformat
 import pytest
 
-from grader.course_notebooks import (CHECK_ID, group_cell_id, notebook_path, render, scored_groups, write_all)
+from grader.course_notebooks import (CHECK_ID, build_notebook, group_cell_id, notebook_path, render, scored_groups,
+                                    write_all)
 from grader.nbgrader_autograde import nbgrader_env
-from grader.problems import list_problems
+from grader.problems import list_problems, load_problem
 from grader.submissions import Submission
 
 PROBLEMS = list_problems()
@@ -78,3 +79,18 @@ def test_nbgrader_validate_and_sample_check(tmp_path):
     out = next(c for c in nb.cells if c.metadata["nbgrader"]["grade_id"] == CHECK_ID).outputs
     html = "".join(o.get("data", {}).get("text/html", "") for o in out)
     assert "sample/1-tutorial" in html and "<b>AC</b>" in html and "data:image/png;base64," in html
+
+
+def test_the_course_notebook_says_what_the_clock_and_validate_are():
+    """In the nbgrader course the timed exam's clock is the instructor's due date (not the judge's
+    `timed start`), and every notebook says that `nbgrader validate` cannot see wrong code."""
+    for p in list_problems():
+        nb = build_notebook(p)
+        text = "\n".join(c.source for c in nb.cells if c.cell_type == "markdown")
+        assert "nbgrader validate" in text and "sample check" in text, p.id
+        if p.timed:
+            assert "timed start" not in text and "timed submit" not in text, p.id
+            assert "due date" in text and f"{p.timed.get('duration_min', 30)} minutes" in text, p.id
+    # the problem package's own statement (the standalone judge) still tells the student to start the clock
+    timed = load_problem("bowyer-watson-timed")
+    assert "timed start" in (timed.path / "statement" / "problem.en.md").read_text()
