@@ -18,14 +18,13 @@ import shutil
 import sys
 import tempfile
 import time
-from datetime import datetime, timedelta, timezone
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests" / "nbgrader"))
 
-from fake_class import Student, _solution, add_roster, gradebook_scores, make_course, submit_class  # noqa: E402
+from fake_class import Student, _solution, collected_class, gradebook_scores  # noqa: E402
 
-from grader.nbgrader_autograde import grade_course, run_nbgrader, set_exam_deadline  # noqa: E402
+from grader.nbgrader_autograde import grade_course, run_nbgrader  # noqa: E402
 from grader.problems import load_problem  # noqa: E402
 
 PROBLEM = "bowyer-watson-timed"
@@ -47,11 +46,7 @@ def main() -> int:
     right, wrong = _solution("accepted_scan.py"), _solution("wrong_tutorial.py")
     klass = [Student(f"s{k:03d}", right if k % 2 == 0 else wrong) for k in range(a.students)]
     with tempfile.TemporaryDirectory(prefix="bench-hub-") as tmp:
-        course = make_course(Path(tmp), PROBLEM)
-        add_roster(course.root, [s.name for s in klass])
-        due = set_exam_deadline(course.root, PROBLEM, datetime.now(timezone.utc) - timedelta(minutes=25))
-        submit_class(course, PROBLEM, klass, due)
-        course.nbgrader("collect", PROBLEM)
+        course = collected_class(Path(tmp), PROBLEM, klass)
         plain = Path(tmp) / "plain"
         shutil.copytree(course.root, plain)
         with open(plain / "nbgrader_config.py", "a") as f:

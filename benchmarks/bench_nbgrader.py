@@ -14,14 +14,13 @@ import shutil
 import sys
 import tempfile
 import time
-from datetime import datetime, timedelta, timezone
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests" / "nbgrader"))
 
-from fake_class import add_roster, gradebook_scores, make_course, students, submit_class  # noqa: E402
+from fake_class import collected_class, gradebook_scores, students  # noqa: E402
 
-from grader.nbgrader_autograde import grade_course, run_nbgrader, set_exam_deadline  # noqa: E402
+from grader.nbgrader_autograde import grade_course, run_nbgrader  # noqa: E402
 from grader.problems import load_problem  # noqa: E402
 
 PROBLEM = "bowyer-watson-timed"
@@ -33,12 +32,8 @@ def main() -> int:
     a = ap.parse_args()
     load_problem(PROBLEM).tests()
     with tempfile.TemporaryDirectory(prefix="bench-nbgrader-") as tmp:
-        course = make_course(Path(tmp), PROBLEM)
         klass = students()
-        add_roster(course.root, [s.name for s in klass])
-        due = set_exam_deadline(course.root, PROBLEM, datetime.now(timezone.utc) - timedelta(minutes=25))
-        submit_class(course, PROBLEM, klass, due)
-        course.nbgrader("collect", PROBLEM)
+        course = collected_class(Path(tmp), PROBLEM, klass)
         twin = Path(tmp) / "twin"
         shutil.copytree(course.root, twin)
         t0 = time.perf_counter()

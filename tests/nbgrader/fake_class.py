@@ -170,6 +170,19 @@ def submit_class(course: Course, problem_id: str, klass: list[Student], deadline
         nbformat.write(student_notebook(released, s), str(d / f"{problem_id}.ipynb"))
 
 
+def collected_class(tmp: Path, problem_id: str, klass: list[Student], started_min_ago: float = 25) -> Course:
+    """A course in ``tmp`` with ``klass`` on the roster, the exam started ``started_min_ago`` minutes ago
+    (its due date set from that start), every submission in the exchange and collected."""
+    from grader.nbgrader_autograde import set_exam_deadline
+
+    course = make_course(tmp, problem_id)
+    add_roster(course.root, [s.name for s in klass])
+    due = set_exam_deadline(course.root, problem_id, datetime.now(timezone.utc) - timedelta(minutes=started_min_ago))
+    submit_class(course, problem_id, klass, due)
+    course.nbgrader("collect", problem_id)
+    return course
+
+
 def gradebook_scores(root: Path, problem_id: str) -> dict[str, dict]:
     """Per student: score (after late penalty), raw score, penalty, and any manual scores set."""
     from nbgrader.api import Gradebook
