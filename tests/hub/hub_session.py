@@ -38,6 +38,8 @@ def can_run() -> str:
     for tool in ("useradd", "npm", "/usr/bin/python3"):
         if shutil.which(tool) is None:
             return f"{tool} is missing"
+    if subprocess.run(["/usr/bin/python3", "-c", "import ensurepip"], capture_output=True).returncode:
+        return "/usr/bin/python3 cannot make a venv (apt-get install python3-venv)"
     return ""
 
 
