@@ -39,8 +39,16 @@ venv() {  # the shared venv, rebuilt only when pyproject.toml or the course's so
 }
 
 proxy() {  # configurable-http-proxy from npm, in a local prefix (deploy/jupyterhub/node/, gitignored)
-    [ -x "$HERE/node/node_modules/.bin/configurable-http-proxy" ] \
-        || npm install --silent --no-audit --no-fund --prefix "$HERE/node" configurable-http-proxy
+    # One install at a time (make hub and the tests may run at once), and a proxy that does not
+    # start (a half-written node_modules) is installed afresh rather than trusted.
+    local cmd="$HERE/node/node_modules/.bin/configurable-http-proxy"
+    (
+        flock 9
+        "$cmd" --version >/dev/null 2>&1 && exit 0
+        rm -rf "$HERE/node"
+        npm install --loglevel=error --no-audit --no-fund --prefix "$HERE/node" configurable-http-proxy \
+            && "$cmd" --version >/dev/null || { echo "deploy.sh: npm could not install configurable-http-proxy" >&2; exit 1; }
+    ) 9>"$HERE/.node.lock"
 }
 
 accounts() {
