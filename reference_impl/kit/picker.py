@@ -16,6 +16,13 @@ triangulation; pass ``draw(ax, points)`` to draw something else, e.g. a convex
 hull or Voronoi cells).  A notebook run without a browser keeps a PNG of the same
 axes (``static_png``).
 
+Measured with 100 points (JupyterLab in headless chromium on a shared 2-core host,
+``pytest tests/browser/test_jupyterlab.py -k drag -s``): the page draws a move in
+0.6 ms (median; 1.4 ms at most), 7.2 ms from the pointer event to the frame (15.8 ms
+at most); the kernel's answer reaches the page 56 ms after the move was sent
+(median; 66 ms at most).  The kernel's part, ``python benchmarks/bench_picker.py``:
+8.8 ms per answer at n = 100, 34 ms at n = 1000.
+
 >>> p = PointPicker()
 >>> p.load_preset("tutorial"); p.points.tolist()
 [[1.0, 1.0], [3.0, 2.0], [5.0, 1.0], [4.0, 4.0]]

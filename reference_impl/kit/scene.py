@@ -56,6 +56,7 @@ from matplotlib.colors import to_hex, to_rgba
 from matplotlib.image import AxesImage
 from matplotlib.lines import Line2D
 from matplotlib.patches import Circle, Patch
+from matplotlib.path import Path
 from matplotlib.text import Annotation, Text
 
 __all__ = ["axes_scene", "pixel_points"]
@@ -157,6 +158,25 @@ def _path_item(canvas, refs, parts: list[np.ndarray], *, closed: bool, fill, fo,
             "lw": [round(float(v), 3) for v in lw], "dash": dash, "z": float(z)}
 
 
+def _simple_parts(paths, transform) -> list[np.ndarray] | None:
+    """Polylines of paths made only of one MOVETO and LINETOs (a CLOSEPOLY dropped), transformed in
+    one call; ``None`` when some path has curves or several parts (``to_polygons`` handles those)."""
+    verts = []
+    for path in paths:
+        codes = path.codes
+        v = path.vertices
+        if codes is not None:
+            if codes[-1] == Path.CLOSEPOLY:
+                codes, v = codes[:-1], v[:-1]
+            if len(codes) and (codes[0] != Path.MOVETO or np.any(codes[1:] != Path.LINETO)):
+                return None
+        verts.append(v)
+    if not verts:
+        return []
+    sizes = np.cumsum([len(v) for v in verts])[:-1]
+    return np.split(transform.transform(np.vstack(verts)), sizes)
+
+
 def _pt(canvas) -> float:
     """Pixels per typographic point."""
     return canvas.dpi / 72.0
@@ -175,7 +195,9 @@ def _collection(canvas, refs, c) -> list[dict]:
         return [{"t": "dots", "xy": _rounded(xy), "ref": refs.of(xy), "r": radius, "fill": fill, "fo": fo,
                  "stroke": stroke, "so": so, "lw": [round(v, 3) for v in lw], "z": float(c.get_zorder())}]
     transform = c.get_transform()
-    parts = [poly for path in c.get_paths() for poly in path.to_polygons(transform, closed_only=False)]
+    parts = _simple_parts(c.get_paths(), transform)
+    if parts is None:                                  # curves or several sub-paths: let matplotlib flatten
+        parts = [poly for path in c.get_paths() for poly in path.to_polygons(transform, closed_only=False)]
     closed = not isinstance(c, LineCollection)
     if closed:
         parts = [p[:-1] if len(p) > 1 and np.array_equal(p[0], p[-1]) else p for p in parts]
