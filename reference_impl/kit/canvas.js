@@ -118,8 +118,12 @@ function render({ model, el }) {
           }
           parts.push(item.closed ? d + "Z" : d);
         }
+        // one <path> for all parts only when they are outlines of one style: filled parts drawn as one
+        // path would cancel where they overlap with opposite windings, and translucent ones must
+        // darken where they overlap, as Agg draws them
         const uniform = [item.fill, item.fo, item.stroke, item.so, item.lw].every(l => !l || l.length <= 1);
-        if (uniform) {
+        const outlines = !item.fill || item.fill.every(f => f === "none");
+        if (uniform && (outlines || parts.length === 1)) {
           out.push(`<path d="${parts.join("")}"${paint(at(item.fill, 0), at(item.fo, 0), at(item.stroke, 0),
             at(item.so, 0), at(item.lw, 0), item.dash)}/>`);
         } else {
@@ -189,8 +193,10 @@ function render({ model, el }) {
     model.send({ kind: "move", i: drag.i, x: drag.x, y: drag.y, seq, drag: drag.id, end: !!end });
   }
 
+  const live = () => model.get("interactive") !== false;
+  svg.classList.toggle("kit-interactive", live());
   svg.addEventListener("pointerdown", ev => {
-    if (ev.button !== 0) return;
+    if (ev.button !== 0 || !live()) return;
     const [x, y] = local(ev);
     press = { i: hit(x, y), x, y, moved: false };
     svg.setPointerCapture(ev.pointerId);

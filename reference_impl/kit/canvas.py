@@ -59,13 +59,16 @@ class SceneView(anywidget.AnyWidget):
 
     _esm = ESM
     _css = """
-    .kit-canvas { cursor: crosshair; max-width: 100%; height: auto; }
+    .kit-canvas { max-width: 100%; height: auto; }
+    .kit-canvas.kit-interactive { cursor: crosshair; }
     .kit-canvas text { pointer-events: none; }
     """
     scene = traitlets.Dict().tag(sync=True)
     points = traitlets.List(traitlets.Float()).tag(sync=True)
     ack = traitlets.Int(0).tag(sync=True)
     hit = traitlets.Float(9.0).tag(sync=True)
+    interactive = traitlets.Bool(True).tag(sync=True)
+    """False: a picture only (a step player's), the mouse sends nothing."""
 
     def __init__(self, width: int = 440, height: int = 400, **kwargs: Any) -> None:
         super().__init__(**kwargs)

@@ -107,10 +107,13 @@ def test_lesson_03_player_picker_and_quiz_work_in_chromium(lab, page):
     player = page.locator(".kit-step-player").first
     player.scroll_into_view_if_needed()
     player.locator(".widget-html", has_text="step 1/10").wait_for(timeout=30_000)
-    before = player.locator("img").first.get_attribute("src")
+    picture = player.locator("svg.kit-canvas").first
+    picture.locator("path").first.wait_for(state="attached", timeout=30_000)
+    before = picture.inner_html()
     player.get_by_role("button", name="next").click()
     player.locator(".widget-html", has_text="step 2/10").wait_for(timeout=30_000)
-    assert player.locator("img").first.get_attribute("src") != before
+    page.wait_for_function("([svg, old]) => svg.innerHTML !== old", arg=[picture.element_handle(), before],
+                           timeout=30_000)               # the browser redrew the step
     assert kernel_says(page, "print(player.index)", "1") == "1"
     for k in range(3, 9):           # on to step 8: the bad triangles of the last point
         player.get_by_role("button", name="next").click()
@@ -164,7 +167,7 @@ def test_lesson_01_runs_in_chromium_and_its_picker_draws(lab, page):
     assert pickers.count() >= 3
     first = pickers.first
     first.scroll_into_view_if_needed()
-    first.locator("svg.kit-canvas circle").nth(3).wait_for(timeout=30_000)   # drawn by the browser
+    first.locator("svg.kit-canvas circle").nth(3).wait_for(state="attached", timeout=30_000)   # drawn by the browser
     assert first.locator("svg.kit-canvas text").count() >= 1           # the title, drawn as text
     first.screenshot(path=str(SHOTS / "lesson01-picker.png"))
     page.screenshot(path=str(SHOTS / "lesson01.png"))
@@ -243,7 +246,7 @@ def test_a_drag_redraws_in_the_page_every_move_and_the_kernel_follows(lab, page)
 
     open_and_run(page, lab, DRAG)
     picture = page.locator(".kit-point-picker svg.kit-canvas").first
-    picture.locator("circle").nth(99).wait_for(timeout=30_000)
+    picture.locator("circle").nth(99).wait_for(state="attached", timeout=30_000)
     picture.evaluate("svg => svg.scrollIntoView({block: 'center', inline: 'center'})")
     # the point nearest the middle of the picture, and a spot 60 pixels to its right
     k, (px, py) = json.loads(page.evaluate(IN_KERNEL, (

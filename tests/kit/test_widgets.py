@@ -15,6 +15,7 @@ Python integers (``exact_oracle``).
 from __future__ import annotations
 
 import base64
+import json
 
 import numpy as np
 import pytest
@@ -72,7 +73,7 @@ def test_bowyer_watson_player_steps_through_the_trace_and_highlights_each_phase(
     for k in range(len(p.steps)):
         assert p.index == k
         seen_lines.append(p.current_line)
-        seen_images.add(bytes(p.image.value))
+        seen_images.add(json.dumps(p.image.scene, sort_keys=True))     # what the browser is told to draw
         # the highlighted pseudocode line is the current phase's, and only that one
         highlighted = [key for key, _ in BOWYER_WATSON_PSEUDOCODE
                        if f'data-key="{key}" style="background' in p.code.value]
@@ -97,7 +98,17 @@ def test_player_on_random_points_ends_in_the_delaunay_triangulation():
     p.index = 10 ** 6                                      # clamps to the last step
     assert p.index == len(p.steps) - 1
     assert canon(p.step.step.triangles) == scipy_canon(pts)
-    assert png_size(bytes(p.image.value)) == (480, 400)
+    assert (p.image.scene["w"], p.image.scene["h"]) == (480, 400) and not p.image.interactive
+    from reference_impl.kit.scene import pixel_points
+    P = pixel_points(p.canvas, pts)                         # the browser's triangles, read back as indices
+    drawn = set()
+    for item in p.image.scene["items"]:
+        if item["t"] == "path" and item["closed"] and set(item["n"]) == {3}:
+            for tri in np.asarray(item["xy"]).reshape(-1, 3, 2):
+                d = np.hypot(*(P[None, :, :] - tri[:, None, :]).transpose(2, 0, 1))
+                if d.min(axis=1).max() < 1e-2:
+                    drawn.add(tuple(sorted(d.argmin(axis=1).tolist())))
+    assert {tuple(sorted(t)) for t in p.step.step.triangles} <= drawn
 
 
 def test_generic_player_with_phases_and_bad_input():
