@@ -17,7 +17,10 @@ and the library never import ipywidgets):
 * ``theory`` (theory.py): lesson 13's players, one constrained segment inserted
   (``segment_player``), one 3D cavity turned (``cavity_player``), each Lawson flip's six
   angles (``flip_angle_player``), each insertion's new triangles (``star_player``);
-* ``render`` (render.py): the drawing helpers they share.
+* ``render`` (render.py): the drawing helpers they share;
+* ``canvas`` / ``scene`` (canvas.py, canvas.js, scene.py): the picker's and the players'
+  pictures drawn by the browser as SVG (an anywidget), from what the lesson drew on a
+  matplotlib axes; a dragged point and its triangles move in the page at once.
 
 Every widget also carries a static PNG for notebooks run without a browser.
 ``quick_mode()`` is true when the environment sets ``COURSE_QUICK=1`` (CI):

@@ -39,7 +39,9 @@ from reference_impl.exact.predicates import orient2d
 
 from .render import (COLORS, Canvas, draw_circumcircle, draw_edges, draw_points, draw_triangles,
                      filmstrip, fill_triangles, fit_bounds)
-from .widget import KitWidget, button, png_image
+from .canvas import SceneView
+from .scene import axes_scene
+from .widget import KitWidget, button
 
 __all__ = ["StepPlayer", "PickAndStep", "BWFrame", "FlipFrame", "BOWYER_WATSON_PSEUDOCODE", "LAWSON_PSEUDOCODE",
            "bowyer_watson_frames", "lawson_frames", "scrambled_triangulation"]
@@ -340,7 +342,8 @@ class StepPlayer(KitWidget):
         widgets.jslink((self.play, "value"), (self.slider, "value"))
         self.prev = button("previous", "step-backward")
         self.next = button("next", "step-forward")
-        self.image = png_image(size[0])
+        self.image = SceneView(*size, interactive=False)     # drawn by the browser (kit/canvas.js)
+        self.image.add_class("kit-player-image")
         self.caption = widgets.HTML()
         self.code = widgets.HTML(layout=widgets.Layout(flex="1 1 auto", min_width="14em"))
         controls = widgets.HBox([self.play, self.prev, self.next, self.slider])
@@ -382,7 +385,7 @@ class StepPlayer(KitWidget):
         k = self.index
         ax = self.canvas.clear(bounds=self._bounds, title=self.title)
         self._draw_step(ax, k)
-        self.image.value = self.canvas.png()
+        self.image.scene = axes_scene(self.canvas)
         self.caption.value = f"<b>step {k + 1}/{len(self.steps)}</b>: " + html.escape(
             self._describe(self.steps[k]))
         self.code.value = self._pseudocode_html()

@@ -3,9 +3,9 @@
     .venv/bin/python -m pytest tests/kit -q
 
 Widgets are driven the way a browser drives them: ``button.click()`` fires the
-on_click callbacks, setting ``slider.value`` fires the observers, and
-``PointPicker.handle_event`` receives the dictionaries ipyevents sends
-(``type``, ``dataX``, ``dataY`` in image pixels).  Pictures are checked to be
+on_click callbacks, setting ``slider.value`` fires the observers, and a point
+picker's view receives the gesture messages its front end (kit/canvas.js) sends
+(``add``/``remove``/``move`` in image pixels) through the widget's message path.  Pictures are checked to be
 PNGs of the promised size that change when the state changes.  Oracles: the
 triangles a widget shows are compared with scipy.spatial.Delaunay (general
 position), with the exact checker ``verify.check_delaunay`` and with the
@@ -15,6 +15,7 @@ Python integers (``exact_oracle``).
 from __future__ import annotations
 
 import base64
+import json
 
 import numpy as np
 import pytest
@@ -24,6 +25,7 @@ from exact_oracle import canon, exact, incircle as exact_incircle, orient as exa
 from reference_impl import bowyer_watson
 from reference_impl.structures.flips import validate_triangulation
 from reference_impl.kit import MeasurePanel, PointPicker, PredictReveal, PredictRevealMany, StepPlayer, pick, quick_mode
+from reference_impl.kit.picker import delaunay_triangles
 from reference_impl.kit.player import BOWYER_WATSON_PSEUDOCODE, scrambled_triangulation
 from reference_impl.kit.quiz import bad_triangles_quiz, locally_delaunay_quiz
 from reference_impl.kit.render import Canvas, png_size
@@ -71,7 +73,7 @@ def test_bowyer_watson_player_steps_through_the_trace_and_highlights_each_phase(
     for k in range(len(p.steps)):
         assert p.index == k
         seen_lines.append(p.current_line)
-        seen_images.add(bytes(p.image.value))
+        seen_images.add(json.dumps(p.image.scene, sort_keys=True))     # what the browser is told to draw
         # the highlighted pseudocode line is the current phase's, and only that one
         highlighted = [key for key, _ in BOWYER_WATSON_PSEUDOCODE
                        if f'data-key="{key}" style="background' in p.code.value]
@@ -96,7 +98,17 @@ def test_player_on_random_points_ends_in_the_delaunay_triangulation():
     p.index = 10 ** 6                                      # clamps to the last step
     assert p.index == len(p.steps) - 1
     assert canon(p.step.step.triangles) == scipy_canon(pts)
-    assert png_size(bytes(p.image.value)) == (480, 400)
+    assert (p.image.scene["w"], p.image.scene["h"]) == (480, 400) and not p.image.interactive
+    from reference_impl.kit.scene import pixel_points
+    P = pixel_points(p.canvas, pts)                         # the browser's triangles, read back as indices
+    drawn = set()
+    for item in p.image.scene["items"]:
+        if item["t"] == "path" and item["closed"] and set(item["n"]) == {3}:
+            for tri in np.asarray(item["xy"]).reshape(-1, 3, 2):
+                d = np.hypot(*(P[None, :, :] - tri[:, None, :]).transpose(2, 0, 1))
+                if d.min(axis=1).max() < 1e-2:
+                    drawn.add(tuple(sorted(d.argmin(axis=1).tolist())))
+    assert {tuple(sorted(t)) for t in p.step.step.triangles} <= drawn
 
 
 def test_generic_player_with_phases_and_bad_input():
@@ -153,34 +165,134 @@ def test_player_static_picture_is_a_filmstrip_and_text_says_what_it_shows():
 
 
 # ----------------------------------------------------------------------------- picker
+def send(picker: PointPicker, **gesture) -> None:
+    """A message from the picker's front end, through the widget's own message path."""
+    picker.view._handle_custom_msg(gesture, [])
+
+
+def hit(picker: PointPicker, px: float, py: float):
+    """The point the front end grabs at pixel (px, py): canvas.js's rule, nearest within ``hit``."""
+    P = np.asarray(picker.view.points).reshape(-1, 2)
+    if len(P) == 0:
+        return None
+    d = np.hypot(P[:, 0] - px, P[:, 1] - py)
+    return int(d.argmin()) if d.min() <= picker.view.hit else None
+
+
 def click(picker: PointPicker, x: float, y: float) -> None:
+    """A click at data point (x, y): on empty space it adds, on a point it removes (as canvas.js does)."""
     px, py = picker.canvas.to_pixel(x, y)
-    picker.handle_event({"type": "mousedown", "dataX": px, "dataY": py})
-    picker.handle_event({"type": "mouseup", "dataX": px, "dataY": py})
+    i = hit(picker, px, py)
+    if i is None:
+        send(picker, kind="add", x=px, y=py)
+    else:
+        send(picker, kind="remove", i=i)
+
+
+def drag(picker: PointPicker, i: int, path, *, drag_id: int, seq0: int = 0) -> int:
+    """Point i dragged through the data points ``path`` (the last one is the release); the last seq."""
+    for k, (x, y) in enumerate(path):
+        px, py = picker.canvas.to_pixel(x, y)
+        send(picker, kind="move", i=i, x=px, y=py, seq=seq0 + k + 1, drag=drag_id, end=k == len(path) - 1)
+    return seq0 + len(path)
+
+
+def scene_triangles(picker: PointPicker) -> set:
+    """The triangles the browser is told to draw: the scene's closed parts whose 3 vertices are points."""
+    out = []
+    for item in picker.view.scene["items"]:
+        if item["t"] != "path" or not item["closed"]:
+            continue
+        j = 0
+        for n in item["n"]:
+            refs = item["ref"][j:j + n]
+            j += n
+            if n == 3 and min(refs) >= 0:
+                out.append(tuple(refs))
+    return canon(out)
 
 
 def test_picker_click_adds_drag_moves_click_on_point_removes():
     p = PointPicker([(0.2, 0.2), (0.8, 0.25), (0.5, 0.8)])
-    before = bytes(p.image.value)
+    before = p.view.scene
     click(p, 0.5, 0.45)                                     # empty space: a new point
     assert len(p.points) == 4 and np.allclose(p.points[3], (0.5, 0.45), atol=0.01)
     assert canon(p.triangles) == scipy_canon(p.points) and len(p.triangles) == 3
-    assert bytes(p.image.value) != before
-    # drag point 3 to (0.5, 0.1): press on it, move, release
-    sx, sy = p.canvas.to_pixel(*p.points[3])
-    tx, ty = p.canvas.to_pixel(0.5, 0.1)
-    p.handle_event({"type": "mousedown", "dataX": sx, "dataY": sy})
-    p.handle_event({"type": "mousemove", "dataX": (sx + tx) / 2, "dataY": (sy + ty) / 2})
-    p.handle_event({"type": "mousemove", "dataX": tx, "dataY": ty})
-    p.handle_event({"type": "mouseup", "dataX": tx, "dataY": ty})
+    assert p.view.scene != before and scene_triangles(p) == canon(p.triangles)
+    # drag point 3 to (0.5, 0.1): two moves, the second one the release
+    last = drag(p, 3, [(0.5, 0.3), (0.5, 0.1)], drag_id=1)
+    assert p.view.ack == last                               # the kernel answered the release
     assert len(p.points) == 4 and np.allclose(p.points[3], (0.5, 0.1), atol=0.01)
     assert check_delaunay(p.points, p.triangles) == (True, "ok")
+    assert scene_triangles(p) == canon(p.triangles)
+    P = np.asarray(p.view.points).reshape(-1, 2)            # the browser's points are the kernel's, in pixels
+    assert np.allclose(P, [p.canvas.to_pixel(*q) for q in p.points], atol=1e-3)
     p.undo()                                                # one undo reverts the whole drag
     assert np.allclose(p.points[3], (0.5, 0.45), atol=0.01)
     click(p, *p.points[0])                                  # click on a point: removed
     assert len(p.points) == 3 and not np.allclose(p.points[0], (0.2, 0.2))
     p.undo()
     assert np.allclose(p.points[0], (0.2, 0.2))
+
+
+def test_picker_drag_reports_once_and_always_answers():
+    changes = []
+    p = PointPicker([(0.2, 0.2), (0.8, 0.25), (0.5, 0.8), (0.5, 0.4)], on_change=lambda w: changes.append(1))
+    px, py = p.canvas.to_pixel(0.5, 0.5)
+    send(p, kind="move", i=3, x=px, y=py, seq=1, drag=7, end=False)
+    assert p.view.ack == 1 and changes == []                # answered at once; on_change waits for the release
+    send(p, kind="move", i=3, x=px, y=py + 5, seq=2, drag=7, end=True)
+    assert p.view.ack == 2 and changes == [1]
+    # a move the kernel cannot apply (the point is gone) is still answered, and the error is shown
+    send(p, kind="move", i=9, x=px, y=py, seq=3, drag=8, end=True)
+    shown = lambda: "".join(o.get("text", "") for o in p.errors.outputs)     # noqa: E731
+    assert p.view.ack == 3 and "no point 9" in shown()
+    for bad, message in [({"kind": "move", "i": 0, "x": float("nan"), "y": 1, "seq": 4, "drag": 9},
+                          "x must be a finite number"),
+                         ({"kind": "add", "x": "1", "y": 2}, "x must be a finite number"),
+                         ({"kind": "remove", "i": True}, "i must be a point index"),
+                         ({"kind": "zoom"}, "unknown gesture 'zoom'")]:
+        send(p, **bad)
+        assert message in shown(), message
+    assert len(p.points) == 4                               # nothing changed by the bad messages
+
+
+def test_picker_scene_follows_the_lessons_drawing():
+    """A custom draw's triangles, circles and labels reach the scene, tied to the points they sit on."""
+    from reference_impl.kit.render import draw_circumcircle, draw_points, draw_triangles
+
+    def draw(ax, pts):
+        tris = delaunay_triangles(pts)
+        draw_triangles(ax, pts, tris)
+        for t in tris:
+            draw_circumcircle(ax, *pts[t])
+        draw_points(ax, pts, labels=True)
+        ax.plot([0.1, 0.9], [0.05, 0.05], "g--")           # a line on no point: fixed pixels
+
+    p = PointPicker([(0.2, 0.2), (0.8, 0.25), (0.5, 0.8), (0.45, 0.45)], draw=draw)
+    kinds = [item["t"] for item in p.view.scene["items"]]
+    assert kinds.count("circle") == len(p.triangles) == 3 and kinds.count("dots") == 1
+    circles = [item for item in p.view.scene["items"] if item["t"] == "circle"]
+    assert sorted(tuple(sorted(c["through"])) for c in circles) == sorted(tuple(sorted(t)) for t in p.triangles.tolist())
+    P = np.asarray(p.view.points).reshape(-1, 2)
+    for c in circles:                                        # each circle passes through its three points
+        assert np.allclose(np.hypot(*(P[c["through"]] - c["c"]).T), c["r"], rtol=1e-4)
+    labels = [item for item in p.view.scene["items"] if item["t"] == "text" and item["ref"] >= 0]
+    assert sorted((item["ref"], item["s"]) for item in labels) == [(i, str(i)) for i in range(4)]
+    line = [item for item in p.view.scene["items"] if item["t"] == "path" and item["dash"]]
+    assert len(line) == 1 and line[0]["ref"] == [-1, -1] and line[0]["stroke"] == ["#008000"]
+    assert p.view.scene["raster"] == ""                     # nothing here needs a PNG layer
+
+
+def test_picker_scene_puts_what_svg_cannot_say_in_a_png_layer():
+    def draw(ax, pts):
+        ax.imshow(np.arange(16.0).reshape(4, 4), extent=(0, 1, 0, 1))
+        ax.scatter(pts[:, 0], pts[:, 1])
+    p = PointPicker([(0.2, 0.2), (0.8, 0.25), (0.5, 0.8)], draw=draw)
+    raster = p.view.scene["raster"]
+    assert raster.startswith("data:image/png;base64,")
+    assert png_size(base64.b64decode(raster.split(",", 1)[1])) == (440, 400)
+    assert [item["t"] for item in p.view.scene["items"]].count("dots") == 1
 
 
 def test_picker_presets_undo_clear_and_on_change():
@@ -229,8 +341,9 @@ def test_picker_custom_draw_and_static_picture():
     p.add_point(1, 1)
     assert calls == [3, 4]
     bundle = p._repr_mimebundle_()
-    assert png_of(bundle) == bytes(p.image.value)
+    assert png_size(png_of(bundle)) == (440, 400)            # the headless picture: Agg, same axes
     assert "4 points, 2 Delaunay triangles" in bundle["text/plain"]
+    assert "application/vnd.jupyter.widget-view+json" in bundle
 
 
 # ----------------------------------------------------------------------------- quizzes
