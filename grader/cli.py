@@ -94,7 +94,7 @@ def _cmd_grade(a: argparse.Namespace) -> int:
     if a.nbgrader:  # SUBMISSIONS is nbgrader's submitted/; results go into its gradebook
         from .nbgrader_autograde import grade_course
 
-        summaries = grade_course(a.problem, a.submissions, jobs=a.jobs)
+        summaries = grade_course(a.problem, a.submissions, jobs=a.jobs, progress=None if a.quiet else sys.stderr)
     else:
         summaries = grade_class(a.problem, a.submissions, a.db, jobs=a.jobs, scheduler=a.scheduler, csv_path=a.csv,
                             report_dir=a.reports, progress=not a.quiet)
@@ -105,8 +105,22 @@ def _cmd_grade(a: argparse.Namespace) -> int:
         print(json.dumps(summaries, indent=1))
     else:
         for s in sorted(summaries, key=lambda s: s["student"]):
-            print(f"{s['student']:20} {s.get('verdict', ''):4} {s.get('score', '')}/{s.get('max_score', '')} {s.get('skipped', '')}")
+            print(f"{s['student']:20} {s.get('verdict', ''):4} {s.get('score', '')}/{s.get('max_score', '')} "
+                  f"{s.get('skipped', '')}{gradebook_note(s)}")
     return 0
+
+
+def gradebook_note(summary: dict) -> str:
+    """What ``grade --nbgrader`` adds to a row: the gradebook's score when the late policy changed it.
+
+    >>> gradebook_note({"score": 40, "gradebook_score": 20.0, "late_penalty": 20.0})
+    '  gradebook: 20 (late penalty -20)'
+    >>> gradebook_note({"score": 40, "gradebook_score": 40.0, "late_penalty": 0.0})
+    ''
+    """
+    if "gradebook_score" not in summary or not summary.get("late_penalty"):
+        return ""
+    return f"  gradebook: {summary['gradebook_score']:g} (late penalty -{summary['late_penalty']:g})"
 
 
 SIMILARITY_DIR = "similarity-report"

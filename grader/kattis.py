@@ -137,12 +137,36 @@ def placements(p: Problem, judge: bool = True, partial: bool = False) -> dict[st
         if result.score == result.max_score:
             raise ValueError(f"{p.id}: {name} (expected {verdict}) passes every exported test "
                              f"(groups {', '.join(g.name for g in p.groups)}); export a group it fails")
+        close = near_limit(result, p.time_limit)
+        if close:
+            print(f"export-kattis: {p.id}/{name}: passed {', '.join(close)}, over {NEAR_LIMIT:g} of the "
+                  f"{p.time_limit:g} s limit: its placement may depend on the judge machine's speed",
+                  file=sys.stderr)
         if result.score > 0:
             out[name] = "partially_accepted"
         else:
             # the first failure's verdict: what data/secret's first_error aggregation reports
             out[name] = KATTIS_DIRS.get(str(result.verdict), "wrong_answer")
     return out
+
+
+#: a passed test slower than this share of the time limit makes a placement depend on timing
+NEAR_LIMIT = 0.5
+
+
+def near_limit(result, time_limit: float, share: float = NEAR_LIMIT) -> list[str]:
+    """The tests ``result`` passed in more than ``share`` of ``time_limit`` seconds, as
+    ``"name (t s)"``: where a slower or busier judge could turn a pass into a TLE and so change
+    the solution's score and its ``submissions/`` directory.
+
+    >>> from grader.verdicts import JudgeResult, TestResult, Verdict
+    >>> r = JudgeResult("p", "s.py", [TestResult("large/01", "large", Verdict.AC, 3.8),
+    ...                               TestResult("tiny/01", "tiny", Verdict.AC, 0.1)], {"large": 30, "tiny": 10})
+    >>> near_limit(r, 6.0)
+    ['large/01 (3.8 s)']
+    """
+    return [f"{t.name} ({t.time_s:.1f} s)" for t in result.tests
+            if str(t.verdict) == "AC" and t.time_s > share * time_limit]
 
 
 def _testdata(path: Path, **settings) -> None:

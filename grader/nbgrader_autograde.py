@@ -34,6 +34,7 @@ import time
 from concurrent.futures import ProcessPoolExecutor, as_completed
 from datetime import datetime, timedelta, timezone
 from pathlib import Path
+from typing import TextIO
 
 import nbformat
 from nbgrader.plugins import LateSubmissionPlugin
@@ -285,35 +286,74 @@ def _judge_job(problem_id: str, student: str, path: str, store_path: str, hide: 
     return {"student": student, "verdict": r.verdict, "score": r.score, "max_score": r.max_score}
 
 
-def grade_course(problem_id: str, submitted: str | Path, jobs: int = 1, autograde: bool = True) -> list[dict]:
+def grade_course(problem_id: str, submitted: str | Path, jobs: int = 1, autograde: bool = True,
+                 progress: TextIO | None = None) -> list[dict]:
     """Judge every collected notebook ``submitted/<student>/<id>/<id>.ipynb`` in a pool of ``jobs``
     processes, then run ``nbgrader autograde`` (which finds the results stored and writes the same
-    gradebook entries, autograded notebooks and late penalties as a one-by-one run)."""
+    gradebook entries, autograded notebooks and late penalties as a one-by-one run).
+
+    ``progress`` (a stream, e.g. ``sys.stderr``) gets a line per judged notebook and one around
+    ``nbgrader autograde``. After autograde each summary also holds the gradebook's
+    ``gradebook_score`` (after the late penalty) and ``late_penalty`` (points taken off)."""
     require_jail()
     submitted = Path(submitted).resolve()
     if not submitted.is_dir():
         raise ValueError(f"{submitted} is not a directory (expected nbgrader's submitted/<student>/{problem_id}/)")
     with using_course(submitted.parent, problem_id) as course_root:  # the course that submitted/ belongs to
-        return _grade_course(problem_id, submitted, course_root, jobs, autograde)
+        return _grade_course(problem_id, submitted, course_root, jobs, autograde, progress)
 
 
-def _grade_course(problem_id: str, submitted: Path, course_root: Path, jobs: int, autograde: bool) -> list[dict]:
+def _say(progress: TextIO | None, text: str) -> None:
+    if progress is not None:
+        print(text, file=progress, flush=True)
+
+
+def gradebook_scores(course_root: Path, problem_id: str, students: list[str]) -> dict[str, tuple[float, float]]:
+    """student -> (score after the late penalty, late penalty) of ``problem_id`` in ``course_root/gradebook.db``;
+    students without a submission there are left out."""
+    from nbgrader.api import Gradebook, MissingEntry
+
+    out = {}
+    with Gradebook(f"sqlite:///{course_root / 'gradebook.db'}") as gb:
+        for student in students:
+            try:
+                sub = gb.find_submission(problem_id, student)
+            except MissingEntry:
+                continue
+            penalty = float(sub.late_submission_penalty or 0.0)
+            out[student] = (max(0.0, float(sub.score) - penalty), penalty)
+    return out
+
+
+def _grade_course(problem_id: str, submitted: Path, course_root: Path, jobs: int, autograde: bool,
+                  progress: TextIO | None = None) -> list[dict]:
     problem = _problem(problem_id)
     problem.tests()  # materialise the hidden tests once, before the workers start
     store_path = course_root / STORE_NAME
     ResultStore(store_path).close()
     hide = (str(submitted), str(course_root))
     out = []
+    collected = _collected(submitted, problem_id)
+    _say(progress, f"{problem_id}: judging {len(collected)} collected notebook(s) from {submitted}, {max(1, jobs)} at a time")
     with ProcessPoolExecutor(max_workers=max(1, jobs)) as pool:
-        futures = {pool.submit(_judge_job, problem_id, s, str(p), str(store_path), hide): s
-                   for s, p in _collected(submitted, problem_id)}
+        futures = {pool.submit(_judge_job, problem_id, s, str(p), str(store_path), hide): s for s, p in collected}
         for fut in as_completed(futures):
             try:
                 out.append(fut.result())
             except Exception as exc:  # noqa: BLE001 - a judge fault; nbgrader autograde judges it again
                 out.append({"student": futures[fut], "verdict": "JE", "error": f"{type(exc).__name__}: {exc}"})
+            r = out[-1]
+            _say(progress, f"[{len(out)}/{len(collected)}] {r['student']}: {r['verdict']} "
+                           f"{r.get('score', '')}/{r.get('max_score', '')}")
     if autograde:
+        _say(progress, f"{problem_id}: nbgrader autograde --force in {course_root} ({len(collected)} notebook(s); "
+                       "it reads the stored results and applies the late policy)")
         run_nbgrader(course_root, "autograde", problem_id, "--force")
+        scores = gradebook_scores(course_root, problem_id, [r["student"] for r in out])
+        for r in out:
+            if r["student"] in scores:
+                r["gradebook_score"], r["late_penalty"] = scores[r["student"]]
+        _say(progress, f"{problem_id}: gradebook written ({len(scores)} submission(s))")
     return sorted(out, key=lambda s: s["student"])
 
 

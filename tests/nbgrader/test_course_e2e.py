@@ -13,7 +13,9 @@ tests/grader/test_jail_user.py runs it as an ordinary instructor account too)
 
 from __future__ import annotations
 
+import contextlib
 import csv
+import io
 import os
 import re
 import shutil
@@ -49,8 +51,12 @@ def graded(tmp_path_factory):
     t0 = time.perf_counter()
     course.nbgrader("autograde", PROBLEM)
     t1 = time.perf_counter()
-    assert grader_main(["grade", PROBLEM, str(twin / "submitted"), "--nbgrader", "--jobs", "2"]) == 0
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        assert grader_main(["grade", PROBLEM, str(twin / "submitted"), "--nbgrader", "--jobs", "2"]) == 0
     t2 = time.perf_counter()
+    (tmp / "grade-nbgrader.out").write_text(out.getvalue())
+    (tmp / "grade-nbgrader.err").write_text(err.getvalue())
     print(f"autograde one by one {t1 - t0:.1f} s, grade --nbgrader --jobs 2 {t2 - t1:.1f} s")  # shown with -s
     course.nbgrader("generate_feedback", PROBLEM)
     course.nbgrader("export", "--to", str(tmp / "grades.csv"))
@@ -149,3 +155,23 @@ def test_student_edition_releases_what_nbgrader_releases(graded):
     ours = release_notebook(nbformat.read(course.root / "source" / PROBLEM / f"{PROBLEM}.ipynb", 4))
     theirs = nbformat.read(course.root / "release" / PROBLEM / f"{PROBLEM}.ipynb", 4)
     assert [(c.source, c.metadata) for c in ours.cells] == [(c.source, c.metadata) for c in theirs.cells]
+
+
+def test_grade_nbgrader_shows_progress_and_the_late_penalty(graded):
+    """``grade --nbgrader`` says on stderr which notebook it judged (k/N) and when nbgrader runs, and
+    its table shows the gradebook's score where the late policy changed it."""
+    course, twin, tmp = graded
+    err = (tmp / "grade-nbgrader.err").read_text()
+    table = {ln.split()[0]: ln for ln in (tmp / "grade-nbgrader.out").read_text().splitlines() if ln.strip()}
+    collected = sorted(d.name for d in (twin / "submitted").iterdir() if (d / PROBLEM / f"{PROBLEM}.ipynb").is_file())
+    n = len(collected)
+    assert f"judging {n} collected notebook(s)" in err, err
+    for k in range(1, n + 1):
+        assert re.search(rf"^\[{k}/{n}\] \S+: ", err, re.M), err
+    assert {m for m in re.findall(rf"^\[\d+/{n}\] (\S+):", err, re.M)} == set(collected)
+    assert "nbgrader autograde" in err and "gradebook written" in err, err
+    book = gradebook_scores(twin, PROBLEM)
+    assert book["late"]["penalty"] > 0
+    assert f"gradebook: {book['late']['score']:g} (late penalty -{book['late']['penalty']:g})" in table["late"], table
+    on_time = [s for s, g in book.items() if not g["penalty"] and s in table]
+    assert on_time and all("gradebook:" not in table[s] for s in on_time), table
