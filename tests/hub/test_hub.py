@@ -5,17 +5,23 @@ through formgrader's API, two students fetch them through the Assignments tab's 
 solution into the first solution cell (one accepted, one wrong on degenerate input) and submit;
 the instructor collects, autogrades (the course's jailed judge, as the instructor's ordinary
 account) and releases feedback; each student fetches it. Every score equals
-`python -m grader judge <id> <notebook>`. Then isolation: student code, run as that student,
-cannot read the other student's home or the exchange's submitted copies.
+`python -m grader judge <id> <notebook>`. Then isolation: student code, run as that student (a
+process, and the student's own kernel on the hub), cannot read the other student's home, the
+exchange's submitted copies or the instructor's course; judged, such code gets a security
+violation and no data. And what every account can read of the problems is enough for the sample
+check but holds nothing a hidden test is built from (no generators, seed or hidden cases).
 
     .venv/bin/python -m pytest tests/hub/test_hub.py -n 0 -x -q      (as root)
 """
 from __future__ import annotations
 
 import json
+import os
 import pwd
+import shutil
 import subprocess
 import sys
+import tempfile
 from pathlib import Path
 
 import pytest
@@ -135,3 +141,99 @@ print(leaks)
     # the probe is real: the owner reads their own notebook
     mine = _as("hubtest-student1", f"print(len(open({other!r} + '/delaunay/delaunay.ipynb').read()) > 0)")
     assert mine.stdout.strip() == "True", mine.stderr
+
+
+LEAK_PROBE = """
+import glob, os
+leaks = []
+for p in {paths!r}:
+    try:
+        open(p, "rb").read(1) if os.path.isfile(p) else os.listdir(p)
+        leaks.append(p)
+    except OSError:
+        pass
+leaks += glob.glob({inbound!r} + "/*/*.ipynb")
+print("LEAKS", leaks)
+"""
+
+
+def _private_paths(hub) -> tuple[list[str], str]:
+    """What a student must not read: the other student's home and work, the instructor's course
+    (sources with solutions, gradebook, submissions), the exchange's inbound."""
+    other = pwd.getpwnam("hubtest-student1").pw_dir
+    course = hub.home / "course"
+    paths = [other, other + "/delaunay/delaunay.ipynb", str(course), str(course / "gradebook.db"),
+             str(course / "source" / "delaunay" / "delaunay.ipynb"), str(course / "delaunay" / "course.yaml"),
+             str(course / "submitted")]
+    return paths, str(hub.home / "exchange" / "delaunay-course" / "inbound")
+
+
+def test_a_students_own_kernel_reads_nothing_private(graded, hub):
+    _, students = graded
+    paths, inbound = _private_paths(hub)
+    out = students["hubtest-student2"].run_in_kernel(LEAK_PROBE.format(paths=paths, inbound=inbound))
+    assert "LEAKS []" in out, out
+    # the probe is real: in student1's own kernel the same code reads student1's files
+    mine = students["hubtest-student1"].run_in_kernel(LEAK_PROBE.format(paths=paths[:2], inbound="/nonexistent"))
+    assert "LEAKS " + repr(paths[:2]) in mine, mine
+
+
+def test_judged_code_that_reads_private_files_gets_a_violation(graded, hub):
+    paths, _ = _private_paths(hub)
+    where = Path(tempfile.mkdtemp(prefix="hubtest-probe-"))      # pytest's tmp_path is root's, 0700
+    probe = where / "probe.py"
+    probe.write_text("LEAKED = []\n" + "\n".join(f"LEAKED.append(open({p!r}, 'rb').read())" for p in paths[1:2])
+                     + "\ndef delaunay(points):\n    return [len(x) for x in LEAKED]\n")
+    os.chmod(where, 0o755)
+    os.chmod(probe, 0o644)
+    env = [f"{k}={v}" for k, v in {"GRADER_PROBLEMS": str(hub.home / "course"),
+                                    "GRADER_CACHE": f"/tmp/hubtest-probe-cache-{os.getpid()}",
+                                    "NUMBA_CACHE_DIR": f"/tmp/hubtest-probe-numba-{os.getpid()}",
+                                    "HOME": pwd.getpwnam(hs.INSTRUCTOR).pw_dir}.items()]
+    try:
+        r = subprocess.run(["runuser", "-u", hs.INSTRUCTOR, "--", "env", *env,
+                            str(REPO / "build" / "hub-venv" / "bin" / "python"),
+                            "-m", "grader", "judge", "delaunay", str(probe), "--json"],
+                           capture_output=True, text=True, timeout=600, cwd="/")
+    finally:
+        for kv in env[1:3]:
+            shutil.rmtree(kv.split("=", 1)[1], ignore_errors=True)
+        shutil.rmtree(where, ignore_errors=True)
+    assert r.stdout.strip(), r.stderr
+    result = json.loads(r.stdout)
+    assert result["verdict"] == "SV" and result["score"] == 0, result
+    assert paths[1] in json.dumps(result), result                  # the message names what it tried
+
+
+def test_students_can_check_samples_but_not_rebuild_hidden_tests(graded, hub):
+    import yaml
+
+    public = hub.home / "problems"
+    listing = _as("hubtest-student2", f"""
+import json, os
+files = [os.path.join(d, f) for d, _, fs in os.walk({str(public)!r}) for f in fs]
+print(json.dumps({{f: open(f, errors="replace").read() if f.endswith(".yaml") else "" for f in files}}))
+""")
+    assert listing.returncode == 0, listing.stderr
+    files = json.loads(listing.stdout)
+    assert files, "the students' copy of the problems is empty"
+    assert not [f for f in files if "/generators/" in f or "/secret/" in f or f.endswith(".ans") and "/sample/" not in f]
+    full = hub.home / "course"
+    for pid in PROBLEMS:
+        mine = yaml.safe_load(files[str(public / pid / "course.yaml")])
+        theirs = yaml.safe_load((full / pid / "course.yaml").read_text())
+        assert "seed" in theirs and any(g.get("cases") for g in theirs["groups"])     # the probe is real
+        assert "seed" not in mine and not [g for g in mine["groups"] if g.get("cases") and not g.get("withheld")], mine
+        assert (full / pid / "generators").is_dir()
+    # the sample check, as the student (the jailed judge, the student's own caches)
+    home = pwd.getpwnam("hubtest-student1").pw_dir
+    check = _as("hubtest-student1", f"""
+import os
+os.environ.update(GRADER_PROBLEMS={str(public)!r}, GRADER_CACHE={home!r} + "/.cache/grader",
+                  NUMBA_CACHE_DIR={home!r} + "/.cache/numba")
+from pathlib import Path
+from grader.sample_check import judge_samples
+result, problem = judge_samples("delaunay", Path({home!r}) / "delaunay" / "delaunay.ipynb")
+print("CHECK", result.verdict, [g.name for g in problem.groups])
+""")
+    assert "CHECK AC ['sample']" in check.stdout, check.stdout + check.stderr
