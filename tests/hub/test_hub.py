@@ -27,6 +27,7 @@ from pathlib import Path
 import pytest
 
 sys.path.insert(0, str(Path(__file__).parent))
+import hub_browser as hb  # noqa: E402
 import hub_session as hs  # noqa: E402
 
 pytestmark = [pytest.mark.xdist_group("hub"),
@@ -36,8 +37,12 @@ REPO = hs.REPO
 SOLUTIONS = {  # student -> problem -> the solution they write
     "hubtest-student1": {"delaunay": "accepted_walk.py", "closest-pair": "accepted_sweep.py"},
     "hubtest-student2": {"delaunay": "wrong_prefix_collinear.py", "closest-pair": "wrong_x_neighbours.py"},
+    "hubtest-student3": {"delaunay": "accepted_walk.py", "closest-pair": "wrong_x_neighbours.py"},
 }
+API_STUDENTS = ("hubtest-student1", "hubtest-student2")   # through the HTTP APIs the pages call
+BROWSER_STUDENT = "hubtest-student3"                        # through the pages, in chromium
 PROBLEMS = ("delaunay", "closest-pair")
+SHOTS = REPO / "build" / "screenshots"
 
 
 @pytest.fixture(scope="module")
@@ -50,13 +55,35 @@ def hub():
 
 
 @pytest.fixture(scope="module")
-def graded(hub):
-    """The whole round trip; returns {student: {problem: formgrader score}} and the users."""
+def browser():
+    if not Path(hb.CHROMIUM).exists():
+        pytest.skip("Debian chromium is not installed (apt-get install chromium)")
+    pytest.importorskip("playwright.sync_api", reason="playwright is not installed (pip install '.[test]')")
+    with hb.student_browser() as b:
+        yield b
+
+
+@pytest.fixture(scope="module")
+def graded(hub, browser):
+    """The whole round trip; returns {student: {problem: formgrader score}}, the API users and the
+    browser student (with what the sample check showed in the page)."""
     instructor = hs.HubUser(hub, hs.INSTRUCTOR)
     for a in PROBLEMS:
         instructor.formgrader(f"assignment/{a}/assign")
         instructor.formgrader(f"assignment/{a}/release")
-    students = {u: hs.HubUser(hub, u) for u in hs.STUDENTS}
+    in_page = hb.BrowserStudent(browser, hub, BROWSER_STUDENT, SHOTS)
+    try:
+        in_page.log_in()
+        in_page.checks = {}
+        for a in PROBLEMS:
+            in_page.fetch(a)
+            code = (REPO / "solutions" / a / SOLUTIONS[BROWSER_STUDENT][a]).read_text()
+            in_page.checks[a] = in_page.write_and_check(a, code, f"judged {a}.ipynb")
+            in_page.submit(a)
+    except Exception:
+        in_page.shot("failed")
+        raise
+    students = {u: hs.HubUser(hub, u) for u in API_STUDENTS}
     for name, st in students.items():
         listed = {x["assignment_id"]: x["status"] for x in st.assignments()}
         assert listed == {a: "released" for a in PROBLEMS}, listed
@@ -72,13 +99,13 @@ def graded(hub):
     scores = {}
     for a in PROBLEMS:
         instructor.formgrader(f"assignment/{a}/collect")
-        for name in students:
+        for name in SOLUTIONS:
             instructor.formgrader(f"submission/{a}/{name}/autograde")
         instructor.formgrader(f"assignment/{a}/generate_feedback")
         instructor.formgrader(f"assignment/{a}/release_feedback")
         for row in instructor.call("GET", f"/formgrader/api/submissions/{a}").json():
             scores.setdefault(row["student"], {})[a] = row["score"]
-    return scores, students
+    return scores, students, in_page
 
 
 def _judge(problem: str, notebook: Path) -> float:
@@ -88,7 +115,7 @@ def _judge(problem: str, notebook: Path) -> float:
 
 
 def test_scores_equal_the_judge(graded, hub):
-    scores, _ = graded
+    scores, _, _ = graded
     course = hub.home / "course"
     for name in hs.STUDENTS:
         for a in PROBLEMS:
@@ -98,7 +125,7 @@ def test_scores_equal_the_judge(graded, hub):
 
 
 def test_students_fetch_their_feedback(graded):
-    scores, students = graded
+    scores, students, _ = graded
     for name, st in students.items():
         for a in PROBLEMS:
             st.assignments("fetch_feedback", assignment_id=a)
@@ -169,7 +196,7 @@ def _private_paths(hub) -> tuple[list[str], str]:
 
 
 def test_a_students_own_kernel_reads_nothing_private(graded, hub):
-    _, students = graded
+    _, students, _ = graded
     paths, inbound = _private_paths(hub)
     out = students["hubtest-student2"].run_in_kernel(LEAK_PROBE.format(paths=paths, inbound=inbound))
     assert "LEAKS []" in out, out
@@ -237,3 +264,14 @@ result, problem = judge_samples("delaunay", Path({home!r}) / "delaunay" / "delau
 print("CHECK", result.verdict, [g.name for g in problem.groups])
 """)
     assert "CHECK AC ['sample']" in check.stdout, check.stdout + check.stderr
+
+
+def test_the_browser_student_checked_submitted_and_reads_feedback(graded):
+    """The student who used the pages: the sample check's table was shown in the page, the scores
+    (in test_scores_equal_the_judge) are the judge's, and the feedback opens from the Assignments tab."""
+    scores, _, in_page = graded
+    for a in PROBLEMS:
+        assert f"judged {a}.ipynb" in in_page.checks[a] and "sample" in in_page.checks[a], in_page.checks[a]
+        text = in_page.fetch_feedback(a)
+        assert a in text and ("Score" in text or "score" in text), text[:500]
+    assert scores[BROWSER_STUDENT]["delaunay"] > scores[BROWSER_STUDENT]["closest-pair"]
