@@ -1,5 +1,6 @@
-"""A student taking the course through the hub's pages in Debian's chromium (Playwright): log in, fetch
-from the Assignments tab, write the solution, run the sample check, submit, later fetch feedback.
+"""The course through the hub's pages in Debian's chromium (Playwright): a student logs in, fetches from
+the Assignments tab, writes the solution, runs the sample check, submits, later fetches feedback;
+the instructor releases, collects, autogrades and returns feedback with formgrader's buttons.
 
 Used by tests/hub/test_hub.py (one browser student beside the two that use the HTTP APIs)::
 
@@ -178,3 +179,36 @@ class BrowserStudent:
         text = page.inner_text("body")
         page.goto(f"{self.base}/lab")
         return text
+
+
+class BrowserInstructor(BrowserStudent):
+    """The instructor's tab: formgrader's own pages (``/formgrader/manage_assignments`` and
+    ``manage_submissions/<id>``), whose buttons are icons in table columns; each click waits for
+    formgrader's "Success" dialog (an error dialog fails with its text) and closes it with *OK*."""
+
+    def _click(self, path: str, row_cell: str, name: str, column: str, what: str) -> None:
+        page = self.page
+        if not page.url.endswith(path):
+            page.goto(f"{self.base}/formgrader/{path}")
+        cell = page.locator(f"td.{row_cell}", has_text=re.compile(rf"^\s*{re.escape(name)}\s*$"))
+        row = page.locator("tr").filter(has=cell).first
+        button = row.locator(f"td.{column} a").first
+        button.wait_for(timeout=60_000)
+        button.click()
+        done = page.locator("#success-modal, #error-modal").first
+        done.wait_for(timeout=600_000)
+        if page.locator("#error-modal").count():
+            raise AssertionError(f"formgrader: {what} of {name}: {page.locator('#error-modal').inner_text()[:3000]}")
+        self.shot(what)
+        done.get_by_role("button", name="OK").click()
+        page.locator("#success-modal").wait_for(state="detached", timeout=30_000)
+
+    def assignment(self, assignment: str, column: str) -> None:
+        """A button of the assignment's row in Manage Assignments: assign (Generate), release, collect,
+        generate-feedback, release-feedback."""
+        self._click("manage_assignments", "name", assignment, column, f"formgrader-{column}-{assignment}")
+
+    def autograde(self, assignment: str, student: str) -> None:
+        """Autograde (the flash icon) of one student's row in the assignment's submissions."""
+        self._click(f"manage_submissions/{assignment}", "student-id", student, "autograde",
+                    f"formgrader-autograde-{assignment}-{student}")

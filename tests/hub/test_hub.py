@@ -67,11 +67,17 @@ def browser():
 def graded(hub, browser):
     """The whole round trip; returns {student: {problem: formgrader score}}, the API users and the
     browser student (with what the sample check showed in the page)."""
-    instructor = hs.HubUser(hub, hs.INSTRUCTOR)
-    for a in PROBLEMS:
-        instructor.formgrader(f"assignment/{a}/assign")
-        instructor.formgrader(f"assignment/{a}/release")
+    teacher = hb.BrowserInstructor(browser, hub, hs.INSTRUCTOR, SHOTS)   # formgrader's buttons
     in_page = hb.BrowserStudent(browser, hub, BROWSER_STUDENT, SHOTS)
+    try:
+        teacher.log_in()
+        for a in PROBLEMS:
+            teacher.assignment(a, "assign")                  # Generate
+            teacher.assignment(a, "release")
+    except Exception:
+        teacher.shot("failed-instructor")
+        raise
+    instructor = hs.HubUser(hub, hs.INSTRUCTOR)              # reads the scores formgrader shows
     try:
         in_page.log_in()
         in_page.checks = {}
@@ -98,11 +104,15 @@ def graded(hub, browser):
             st.assignments("submit", assignment_id=a)
     scores = {}
     for a in PROBLEMS:
-        instructor.formgrader(f"assignment/{a}/collect")
-        for name in SOLUTIONS:
-            instructor.formgrader(f"submission/{a}/{name}/autograde")
-        instructor.formgrader(f"assignment/{a}/generate_feedback")
-        instructor.formgrader(f"assignment/{a}/release_feedback")
+        try:
+            teacher.assignment(a, "collect")
+            for name in SOLUTIONS:
+                teacher.autograde(a, name)
+            teacher.assignment(a, "generate-feedback")
+            teacher.assignment(a, "release-feedback")
+        except Exception:
+            teacher.shot("failed-instructor")
+            raise
         for row in instructor.call("GET", f"/formgrader/api/submissions/{a}").json():
             scores.setdefault(row["student"], {})[a] = row["score"]
     return scores, students, in_page
