@@ -30,7 +30,7 @@ REPO = Path(__file__).resolve().parents[2]
 DEPLOY = REPO / "deploy" / "jupyterhub" / "deploy.sh"
 # test accounts of their own (not make hub's hub-*): the test empties their homes before it starts
 INSTRUCTOR = "hubtest-instructor"
-STUDENTS = ("hubtest-student1", "hubtest-student2", "hubtest-student3")   # the third one uses the browser
+STUDENTS = ("hubtest-student1", "hubtest-student2", "hubtest-student3", "hubtest-student4")  # 3, 4: the browser
 
 
 def can_run() -> str:

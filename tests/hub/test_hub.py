@@ -1,13 +1,15 @@
-"""The course on a running JupyterHub (deploy/jupyterhub/), with an instructor and two students.
+"""The course on a running JupyterHub (deploy/jupyterhub/), with an instructor and four students.
 
-One hub for the module (xdist group "hub"): the instructor releases `delaunay` and `closest-pair`
-through formgrader's API, two students fetch them through the Assignments tab's API, write a
-solution into the first solution cell (one accepted, one wrong on degenerate input) and submit;
-the instructor collects, autogrades (the course's jailed judge, as the instructor's ordinary
-account) and releases feedback; each student fetches it. Every score equals
-`python -m grader judge <id> <notebook>`. Then isolation: student code, run as that student (a
-process, and the student's own kernel on the hub), cannot read the other student's home, the
-exchange's submitted copies or the instructor's course; judged, such code gets a security
+One hub for the module (xdist group "hub"). The instructor, in chromium, clicks formgrader's
+Generate and Release for `delaunay` and `closest-pair`. Two students (in chromium, through the
+pages: login form, Assignments tab, the notebook, the sample check's output read in the page)
+and two more (through the HTTP APIs the same pages call) fetch, write a solution into the first
+solution cell (for each problem one accepted, one wrong on degenerate input) and submit; the
+instructor clicks Collect, Autograde (the course's jailed judge, as the instructor's ordinary
+account) and Generate/Release Feedback; each student fetches the feedback and opens it. Every
+score equals `python -m grader judge <id> <notebook>`. Then isolation: student code, run as that
+student (a process, and the student's own kernel on the hub), cannot read another student's home,
+the exchange's submitted copies or the instructor's course; judged, such code gets a security
 violation and no data. And what every account can read of the problems is enough for the sample
 check but holds nothing a hidden test is built from (no generators, seed or hidden cases).
 
@@ -38,9 +40,10 @@ SOLUTIONS = {  # student -> problem -> the solution they write
     "hubtest-student1": {"delaunay": "accepted_walk.py", "closest-pair": "accepted_sweep.py"},
     "hubtest-student2": {"delaunay": "wrong_prefix_collinear.py", "closest-pair": "wrong_x_neighbours.py"},
     "hubtest-student3": {"delaunay": "accepted_walk.py", "closest-pair": "wrong_x_neighbours.py"},
+    "hubtest-student4": {"delaunay": "wrong_prefix_collinear.py", "closest-pair": "accepted_sweep.py"},
 }
 API_STUDENTS = ("hubtest-student1", "hubtest-student2")   # through the HTTP APIs the pages call
-BROWSER_STUDENT = "hubtest-student3"                        # through the pages, in chromium
+BROWSER_STUDENTS = ("hubtest-student3", "hubtest-student4")  # through the pages, in chromium
 PROBLEMS = ("delaunay", "closest-pair")
 SHOTS = REPO / "build" / "screenshots"
 
@@ -65,10 +68,11 @@ def browser():
 
 @pytest.fixture(scope="module")
 def graded(hub, browser):
-    """The whole round trip; returns {student: {problem: formgrader score}}, the API users and the
-    browser student (with what the sample check showed in the page)."""
+    """The whole round trip, the instructor in formgrader's pages; returns {student: {problem:
+    formgrader score}}, the API students and the browser students (with what their sample checks
+    showed in the page)."""
     teacher = hb.BrowserInstructor(browser, hub, hs.INSTRUCTOR, SHOTS)   # formgrader's buttons
-    in_page = hb.BrowserStudent(browser, hub, BROWSER_STUDENT, SHOTS)
+    in_pages = {name: hb.BrowserStudent(browser, hub, name, SHOTS) for name in BROWSER_STUDENTS}
     try:
         teacher.log_in()
         for a in PROBLEMS:
@@ -78,17 +82,18 @@ def graded(hub, browser):
         teacher.shot("failed-instructor")
         raise
     instructor = hs.HubUser(hub, hs.INSTRUCTOR)              # reads the scores formgrader shows
-    try:
-        in_page.log_in()
-        in_page.checks = {}
-        for a in PROBLEMS:
-            in_page.fetch(a)
-            code = (REPO / "solutions" / a / SOLUTIONS[BROWSER_STUDENT][a]).read_text()
-            in_page.checks[a] = in_page.write_and_check(a, code, f"judged {a}.ipynb")
-            in_page.submit(a)
-    except Exception:
-        in_page.shot("failed")
-        raise
+    for name, in_page in in_pages.items():
+        try:
+            in_page.log_in()
+            in_page.checks = {}
+            for a in PROBLEMS:
+                in_page.fetch(a)
+                code = (REPO / "solutions" / a / SOLUTIONS[name][a]).read_text()
+                in_page.checks[a] = in_page.write_and_check(a, code, f"judged {a}.ipynb")
+                in_page.submit(a)
+        except Exception:
+            in_page.shot("failed")
+            raise
     students = {u: hs.HubUser(hub, u) for u in API_STUDENTS}
     for name, st in students.items():
         listed = {x["assignment_id"]: x["status"] for x in st.assignments()}
@@ -115,7 +120,7 @@ def graded(hub, browser):
             raise
         for row in instructor.call("GET", f"/formgrader/api/submissions/{a}").json():
             scores.setdefault(row["student"], {})[a] = row["score"]
-    return scores, students, in_page
+    return scores, students, in_pages
 
 
 def _judge(problem: str, notebook: Path) -> float:
@@ -276,12 +281,15 @@ print("CHECK", result.verdict, [g.name for g in problem.groups])
     assert "CHECK AC ['sample']" in check.stdout, check.stdout + check.stderr
 
 
-def test_the_browser_student_checked_submitted_and_reads_feedback(graded):
-    """The student who used the pages: the sample check's table was shown in the page, the scores
+def test_the_browser_students_checked_submitted_and_read_feedback(graded):
+    """The students who used the pages: the sample check's table was shown in the page, the scores
     (in test_scores_equal_the_judge) are the judge's, and the feedback opens from the Assignments tab."""
-    scores, _, in_page = graded
+    scores, _, in_pages = graded
+    for name, in_page in in_pages.items():
+        for a in PROBLEMS:
+            assert f"judged {a}.ipynb" in in_page.checks[a] and "sample" in in_page.checks[a], in_page.checks[a]
+            text = in_page.fetch_feedback(a)
+            assert a in text and ("Score" in text or "score" in text), text[:500]
+    # each problem: one of them right, one wrong on degenerate input, and formgrader tells them apart
     for a in PROBLEMS:
-        assert f"judged {a}.ipynb" in in_page.checks[a] and "sample" in in_page.checks[a], in_page.checks[a]
-        text = in_page.fetch_feedback(a)
-        assert a in text and ("Score" in text or "score" in text), text[:500]
-    assert scores[BROWSER_STUDENT]["delaunay"] > scores[BROWSER_STUDENT]["closest-pair"]
+        assert scores["hubtest-student3"][a] != scores["hubtest-student4"][a], (a, scores)
