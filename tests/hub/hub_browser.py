@@ -18,27 +18,15 @@ page. Each step waits on the page's state, never on a fixed sleep; each leaves a
 """
 from __future__ import annotations
 
-import contextlib
 import re
-import shutil
+import sys
 from pathlib import Path
-from typing import Iterator
 
-CHROMIUM = shutil.which("chromium") or "/usr/bin/chromium"
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "browser"))
+from labdriver import CHROMIUM, launch_browser  # noqa: E402,F401 - Debian chromium under Playwright
 
-
-@contextlib.contextmanager
-def student_browser() -> Iterator:
-    """Headless Debian chromium (Playwright never downloads a browser here)."""
-    from playwright.sync_api import sync_playwright
-
-    with sync_playwright() as p:
-        browser = p.chromium.launch(executable_path=CHROMIUM, headless=True,
-                                    args=["--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage"])
-        try:
-            yield browser
-        finally:
-            browser.close()
+student_browser = launch_browser
+"""Headless Debian chromium (Playwright never downloads a browser here)."""
 
 
 class BrowserStudent:
