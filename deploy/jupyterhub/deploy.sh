@@ -60,7 +60,7 @@ accounts() {
     done
 }
 
-copy_problems() {  # the problem packages assignments/<id>/ (symlinks kept) into $1, replacing old copies
+copy_problems() {  # the full problem packages assignments/<id>/ (symlinks kept) into $1, replacing old copies
     /usr/bin/python3 - "$REPO/assignments" "$1" <<'PY'
 import shutil, sys
 from pathlib import Path
@@ -77,9 +77,10 @@ course() {
     mkdir -p "$COURSE_HOME" "$HUB_STATE" "$EXCHANGE"
     chmod 0755 "$COURSE_HOME"; chmod 0700 "$HUB_STATE"
     chmod 0777 "$EXCHANGE"                          # nbgrader: every account reads and writes the exchange
-    # problem packages without the nbgrader sources (they hold the solutions): readable by everyone
-    mkdir -p "$COURSE_HOME/problems"
-    copy_problems "$COURSE_HOME/problems"
+    # the students' copy of the problems, readable by everyone: statements, samples, validators and
+    # checkers, and a course.yaml without the hidden tests, their generators or the seed (with those
+    # a student could rebuild every hidden input); the full packages stay in the instructor's course
+    (cd / && "$HUB_VENV/bin/python" -m grader.public_problems "$REPO/assignments" "$COURSE_HOME/problems") >/dev/null
     chown -R root:root "$COURSE_HOME/problems"; chmod -R go-w,go+rX "$COURSE_HOME/problems"
     # the instructor's course root: sources, gradebook, release/submitted/autograded/feedback
     if [ ! -d "$COURSE_HOME/course" ]; then

@@ -10,6 +10,7 @@ Run by tests/hub/test_hub.py (as root); by hand:
 """
 from __future__ import annotations
 
+import json
 import os
 import pwd
 import secrets
@@ -19,6 +20,7 @@ import socket
 import subprocess
 import tempfile
 import time
+import uuid
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -28,7 +30,7 @@ REPO = Path(__file__).resolve().parents[2]
 DEPLOY = REPO / "deploy" / "jupyterhub" / "deploy.sh"
 # test accounts of their own (not make hub's hub-*): the test empties their homes before it starts
 INSTRUCTOR = "hubtest-instructor"
-STUDENTS = ("hubtest-student1", "hubtest-student2")
+STUDENTS = ("hubtest-student1", "hubtest-student2", "hubtest-student3", "hubtest-student4")  # 3, 4: the browser
 
 
 def can_run() -> str:
@@ -151,6 +153,44 @@ class HubUser:
         r = self.s.request(method, self.base + path, headers={"X-XSRFToken": self.xsrf}, timeout=600, **kw)
         r.raise_for_status()
         return r
+
+    def run_in_kernel(self, code: str, timeout: float = 180) -> str:
+        """Run ``code`` in a new kernel of the user's own server (the kernel REST API and its
+        websocket, as JupyterLab does); return what it printed (errors as ``ERROR name: value``)."""
+        import websocket
+
+        kernel = self.call("POST", "/api/kernels", json={"name": "python3"}).json()
+        try:
+            url = "ws" + self.base[len("http"):] + f"/api/kernels/{kernel['id']}/channels"
+            cookie = "; ".join(f"{c.name}={c.value}" for c in self.s.cookies)
+            ws = websocket.create_connection(url, header=[f"Cookie: {cookie}", f"X-XSRFToken: {self.xsrf}"],
+                                             origin=self.hub.url, timeout=timeout)
+            try:
+                msg_id = uuid.uuid4().hex
+                ws.send(json.dumps({
+                    "header": {"msg_id": msg_id, "msg_type": "execute_request", "username": self.name,
+                               "session": uuid.uuid4().hex, "version": "5.3"},
+                    "parent_header": {}, "metadata": {}, "channel": "shell", "buffers": [],
+                    "content": {"code": code, "silent": False, "store_history": False, "user_expressions": {},
+                                "allow_stdin": False, "stop_on_error": True}}))
+                out = []
+                deadline = time.monotonic() + timeout
+                while time.monotonic() < deadline:
+                    msg = json.loads(ws.recv())
+                    if msg.get("parent_header", {}).get("msg_id") != msg_id:
+                        continue
+                    kind, content = msg["msg_type"], msg["content"]
+                    if kind == "stream":
+                        out.append(content["text"])
+                    elif kind == "error":
+                        out.append(f"ERROR {content['ename']}: {content['evalue']}")
+                    elif kind == "status" and content["execution_state"] == "idle":
+                        return "".join(out)
+                raise TimeoutError(f"{self.name}'s kernel did not finish in {timeout:.0f} s: {''.join(out)[-2000:]}")
+            finally:
+                ws.close()
+        finally:
+            self.call("DELETE", f"/api/kernels/{kernel['id']}")
 
     def formgrader(self, path: str) -> dict:
         """POST to formgrader's API (what its buttons do); the JSON answer, which must say success."""

@@ -1,26 +1,35 @@
-"""The course on a running JupyterHub (deploy/jupyterhub/), with an instructor and two students.
+"""The course on a running JupyterHub (deploy/jupyterhub/), with an instructor and four students.
 
-One hub for the module (xdist group "hub"): the instructor releases `delaunay` and `closest-pair`
-through formgrader's API, two students fetch them through the Assignments tab's API, write a
-solution into the first solution cell (one accepted, one wrong on degenerate input) and submit;
-the instructor collects, autogrades (the course's jailed judge, as the instructor's ordinary
-account) and releases feedback; each student fetches it. Every score equals
-`python -m grader judge <id> <notebook>`. Then isolation: student code, run as that student,
-cannot read the other student's home or the exchange's submitted copies.
+One hub for the module (xdist group "hub"). The instructor, in chromium, clicks formgrader's
+Generate and Release for `delaunay` and `closest-pair`. Two students (in chromium, through the
+pages: login form, Assignments tab, the notebook, the sample check's output read in the page)
+and two more (through the HTTP APIs the same pages call) fetch, write a solution into the first
+solution cell (for each problem one accepted, one wrong on degenerate input) and submit; the
+instructor clicks Collect, Autograde (the course's jailed judge, as the instructor's ordinary
+account) and Generate/Release Feedback; each student fetches the feedback and opens it. Every
+score equals `python -m grader judge <id> <notebook>`. Then isolation: student code, run as that
+student (a process, and the student's own kernel on the hub), cannot read another student's home,
+the exchange's submitted copies or the instructor's course; judged, such code gets a security
+violation and no data. And what every account can read of the problems is enough for the sample
+check but holds nothing a hidden test is built from (no generators, seed or hidden cases).
 
     .venv/bin/python -m pytest tests/hub/test_hub.py -n 0 -x -q      (as root)
 """
 from __future__ import annotations
 
 import json
+import os
 import pwd
+import shutil
 import subprocess
 import sys
+import tempfile
 from pathlib import Path
 
 import pytest
 
 sys.path.insert(0, str(Path(__file__).parent))
+import hub_browser as hb  # noqa: E402
 import hub_session as hs  # noqa: E402
 
 pytestmark = [pytest.mark.xdist_group("hub"),
@@ -30,8 +39,13 @@ REPO = hs.REPO
 SOLUTIONS = {  # student -> problem -> the solution they write
     "hubtest-student1": {"delaunay": "accepted_walk.py", "closest-pair": "accepted_sweep.py"},
     "hubtest-student2": {"delaunay": "wrong_prefix_collinear.py", "closest-pair": "wrong_x_neighbours.py"},
+    "hubtest-student3": {"delaunay": "accepted_walk.py", "closest-pair": "wrong_x_neighbours.py"},
+    "hubtest-student4": {"delaunay": "wrong_prefix_collinear.py", "closest-pair": "accepted_sweep.py"},
 }
+API_STUDENTS = ("hubtest-student1", "hubtest-student2")   # through the HTTP APIs the pages call
+BROWSER_STUDENTS = ("hubtest-student3", "hubtest-student4")  # through the pages, in chromium
 PROBLEMS = ("delaunay", "closest-pair")
+SHOTS = REPO / "build" / "screenshots"
 
 
 @pytest.fixture(scope="module")
@@ -44,13 +58,43 @@ def hub():
 
 
 @pytest.fixture(scope="module")
-def graded(hub):
-    """The whole round trip; returns {student: {problem: formgrader score}} and the users."""
-    instructor = hs.HubUser(hub, hs.INSTRUCTOR)
-    for a in PROBLEMS:
-        instructor.formgrader(f"assignment/{a}/assign")
-        instructor.formgrader(f"assignment/{a}/release")
-    students = {u: hs.HubUser(hub, u) for u in hs.STUDENTS}
+def browser():
+    if not Path(hb.CHROMIUM).exists():
+        pytest.skip("Debian chromium is not installed (apt-get install chromium)")
+    pytest.importorskip("playwright.sync_api", reason="playwright is not installed (pip install '.[test]')")
+    with hb.student_browser() as b:
+        yield b
+
+
+@pytest.fixture(scope="module")
+def graded(hub, browser):
+    """The whole round trip, the instructor in formgrader's pages; returns {student: {problem:
+    formgrader score}}, the API students and the browser students (with what their sample checks
+    showed in the page)."""
+    teacher = hb.BrowserInstructor(browser, hub, hs.INSTRUCTOR, SHOTS)   # formgrader's buttons
+    in_pages = {name: hb.BrowserStudent(browser, hub, name, SHOTS) for name in BROWSER_STUDENTS}
+    try:
+        teacher.log_in()
+        for a in PROBLEMS:
+            teacher.assignment(a, "assign")                  # Generate
+            teacher.assignment(a, "release")
+    except Exception:
+        teacher.shot("failed-instructor")
+        raise
+    instructor = hs.HubUser(hub, hs.INSTRUCTOR)              # reads the scores formgrader shows
+    for name, in_page in in_pages.items():
+        try:
+            in_page.log_in()
+            in_page.checks = {}
+            for a in PROBLEMS:
+                in_page.fetch(a)
+                code = (REPO / "solutions" / a / SOLUTIONS[name][a]).read_text()
+                in_page.checks[a] = in_page.write_and_check(a, code, f"judged {a}.ipynb")
+                in_page.submit(a)
+        except Exception:
+            in_page.shot("failed")
+            raise
+    students = {u: hs.HubUser(hub, u) for u in API_STUDENTS}
     for name, st in students.items():
         listed = {x["assignment_id"]: x["status"] for x in st.assignments()}
         assert listed == {a: "released" for a in PROBLEMS}, listed
@@ -65,14 +109,18 @@ def graded(hub):
             st.assignments("submit", assignment_id=a)
     scores = {}
     for a in PROBLEMS:
-        instructor.formgrader(f"assignment/{a}/collect")
-        for name in students:
-            instructor.formgrader(f"submission/{a}/{name}/autograde")
-        instructor.formgrader(f"assignment/{a}/generate_feedback")
-        instructor.formgrader(f"assignment/{a}/release_feedback")
+        try:
+            teacher.assignment(a, "collect")
+            for name in SOLUTIONS:
+                teacher.autograde(a, name)
+            teacher.assignment(a, "generate-feedback")
+            teacher.assignment(a, "release-feedback")
+        except Exception:
+            teacher.shot("failed-instructor")
+            raise
         for row in instructor.call("GET", f"/formgrader/api/submissions/{a}").json():
             scores.setdefault(row["student"], {})[a] = row["score"]
-    return scores, students
+    return scores, students, in_pages
 
 
 def _judge(problem: str, notebook: Path) -> float:
@@ -82,7 +130,7 @@ def _judge(problem: str, notebook: Path) -> float:
 
 
 def test_scores_equal_the_judge(graded, hub):
-    scores, _ = graded
+    scores, _, _ = graded
     course = hub.home / "course"
     for name in hs.STUDENTS:
         for a in PROBLEMS:
@@ -92,7 +140,7 @@ def test_scores_equal_the_judge(graded, hub):
 
 
 def test_students_fetch_their_feedback(graded):
-    scores, students = graded
+    scores, students, _ = graded
     for name, st in students.items():
         for a in PROBLEMS:
             st.assignments("fetch_feedback", assignment_id=a)
@@ -135,3 +183,113 @@ print(leaks)
     # the probe is real: the owner reads their own notebook
     mine = _as("hubtest-student1", f"print(len(open({other!r} + '/delaunay/delaunay.ipynb').read()) > 0)")
     assert mine.stdout.strip() == "True", mine.stderr
+
+
+LEAK_PROBE = """
+import glob, os
+leaks = []
+for p in {paths!r}:
+    try:
+        open(p, "rb").read(1) if os.path.isfile(p) else os.listdir(p)
+        leaks.append(p)
+    except OSError:
+        pass
+leaks += glob.glob({inbound!r} + "/*/*.ipynb")
+print("LEAKS", leaks)
+"""
+
+
+def _private_paths(hub) -> tuple[list[str], str]:
+    """What a student must not read: the other student's home and work, the instructor's course
+    (sources with solutions, gradebook, submissions), the exchange's inbound."""
+    other = pwd.getpwnam("hubtest-student1").pw_dir
+    course = hub.home / "course"
+    paths = [other, other + "/delaunay/delaunay.ipynb", str(course), str(course / "gradebook.db"),
+             str(course / "source" / "delaunay" / "delaunay.ipynb"), str(course / "delaunay" / "course.yaml"),
+             str(course / "submitted")]
+    return paths, str(hub.home / "exchange" / "delaunay-course" / "inbound")
+
+
+def test_a_students_own_kernel_reads_nothing_private(graded, hub):
+    _, students, _ = graded
+    paths, inbound = _private_paths(hub)
+    out = students["hubtest-student2"].run_in_kernel(LEAK_PROBE.format(paths=paths, inbound=inbound))
+    assert "LEAKS []" in out, out
+    # the probe is real: in student1's own kernel the same code reads student1's files
+    mine = students["hubtest-student1"].run_in_kernel(LEAK_PROBE.format(paths=paths[:2], inbound="/nonexistent"))
+    assert "LEAKS " + repr(paths[:2]) in mine, mine
+
+
+def test_judged_code_that_reads_private_files_gets_a_violation(graded, hub):
+    paths, _ = _private_paths(hub)
+    where = Path(tempfile.mkdtemp(prefix="hubtest-probe-"))      # pytest's tmp_path is root's, 0700
+    probe = where / "probe.py"
+    probe.write_text("LEAKED = []\n" + "\n".join(f"LEAKED.append(open({p!r}, 'rb').read())" for p in paths[1:2])
+                     + "\ndef delaunay(points):\n    return [len(x) for x in LEAKED]\n")
+    os.chmod(where, 0o755)
+    os.chmod(probe, 0o644)
+    env = [f"{k}={v}" for k, v in {"GRADER_PROBLEMS": str(hub.home / "course"),
+                                    "GRADER_CACHE": f"/tmp/hubtest-probe-cache-{os.getpid()}",
+                                    "NUMBA_CACHE_DIR": f"/tmp/hubtest-probe-numba-{os.getpid()}",
+                                    "HOME": pwd.getpwnam(hs.INSTRUCTOR).pw_dir}.items()]
+    try:
+        r = subprocess.run(["runuser", "-u", hs.INSTRUCTOR, "--", "env", *env,
+                            str(REPO / "build" / "hub-venv" / "bin" / "python"),
+                            "-m", "grader", "judge", "delaunay", str(probe), "--json"],
+                           capture_output=True, text=True, timeout=600, cwd="/")
+    finally:
+        for kv in env[1:3]:
+            shutil.rmtree(kv.split("=", 1)[1], ignore_errors=True)
+        shutil.rmtree(where, ignore_errors=True)
+    assert r.stdout.strip(), r.stderr
+    result = json.loads(r.stdout)
+    assert result["verdict"] == "SV" and result["score"] == 0, result
+    assert paths[1] in json.dumps(result), result                  # the message names what it tried
+
+
+def test_students_can_check_samples_but_not_rebuild_hidden_tests(graded, hub):
+    import yaml
+
+    public = hub.home / "problems"
+    listing = _as("hubtest-student2", f"""
+import json, os
+files = [os.path.join(d, f) for d, _, fs in os.walk({str(public)!r}) for f in fs]
+print(json.dumps({{f: open(f, errors="replace").read() if f.endswith(".yaml") else "" for f in files}}))
+""")
+    assert listing.returncode == 0, listing.stderr
+    files = json.loads(listing.stdout)
+    assert files, "the students' copy of the problems is empty"
+    assert not [f for f in files if "/generators/" in f or "/secret/" in f or f.endswith(".ans") and "/sample/" not in f]
+    full = hub.home / "course"
+    for pid in PROBLEMS:
+        mine = yaml.safe_load(files[str(public / pid / "course.yaml")])
+        theirs = yaml.safe_load((full / pid / "course.yaml").read_text())
+        assert "seed" in theirs and any(g.get("cases") for g in theirs["groups"])     # the probe is real
+        assert "seed" not in mine and not [g for g in mine["groups"] if g.get("cases") and not g.get("withheld")], mine
+        assert (full / pid / "generators").is_dir()
+    # the sample check, as the student (the jailed judge, the student's own caches)
+    home = pwd.getpwnam("hubtest-student1").pw_dir
+    check = _as("hubtest-student1", f"""
+import os
+os.environ.update(GRADER_PROBLEMS={str(public)!r}, GRADER_CACHE={home!r} + "/.cache/grader",
+                  NUMBA_CACHE_DIR={home!r} + "/.cache/numba")
+from pathlib import Path
+from grader.sample_check import judge_samples
+result, problem = judge_samples("delaunay", Path({home!r}) / "delaunay" / "delaunay.ipynb")
+print("CHECK", result.verdict, [g.name for g in problem.groups])
+""")
+    assert "CHECK AC ['sample']" in check.stdout, check.stdout + check.stderr
+
+
+def test_the_browser_students_checked_submitted_and_read_feedback(graded):
+    """The students who used the pages: the sample check's table was shown in the page, the scores
+    (in test_scores_equal_the_judge) are the judge's, and the feedback opens from the Assignments tab."""
+    scores, _, in_pages = graded
+    for name, in_page in in_pages.items():
+        for a in PROBLEMS:
+            assert f"judged {a}.ipynb" in in_page.checks[a] and "sample" in in_page.checks[a], in_page.checks[a]
+            text = in_page.fetch_feedback(a)
+            assert a in text and ("Score" in text or "score" in text), text[:500]
+    # each problem: one of them right, one wrong on degenerate input, and formgrader tells them apart
+    for a in PROBLEMS:
+        assert scores["hubtest-student3"][a] != scores["hubtest-student4"][a], (a, scores)

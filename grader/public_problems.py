@@ -1,0 +1,94 @@
+"""The students' copy of the problem packages: what the sample check needs, nothing to rebuild a hidden test.
+
+A course server gives every account a read-only copy of the problems, so that the assignment
+notebooks' "check on the samples" cell (``%check_samples``) can judge a student's code on the
+public samples. That copy must not hold what the hidden tests are made from: the generators,
+their seed, or the hidden groups' cases (with those a student could rebuild every hidden input and
+hard-code the answers). This writes, for each package of a course folder, its ``problem.yaml``,
+statement, samples, input validators and checker, and a ``course.yaml`` reduced to its public
+part (``student_edition.public_course_yaml``); the instructor's side keeps the full packages.
+
+Run:
+    python -m grader.public_problems assignments /srv/course/problems    # SOURCE DEST (replaced)
+
+Example:
+    >>> import tempfile
+    >>> out = write_public_problems(REPO / "assignments", Path(tempfile.mkdtemp()) / "problems")
+    >>> sorted(p.name for p in (out / "delaunay").iterdir())
+    ['course.yaml', 'data', 'input_validators', 'output_validator', 'problem.yaml', 'statement']
+    >>> "seed" in (out / "delaunay" / "course.yaml").read_text()
+    False
+"""
+
+from __future__ import annotations
+
+import argparse
+import shutil
+import sys
+from pathlib import Path
+
+import yaml
+
+from .problems import REPO  # noqa: F401 - the example above uses it
+from .student_edition import IGNORE, PROBLEM_PARTS, public_course_yaml
+
+__all__ = ["write_public_problem", "write_public_problems"]
+
+
+def write_public_problem(package: Path, dest: Path) -> Path:
+    """Copy the public parts of one problem package ``package`` to ``dest`` (which must not exist)."""
+    package, dest = Path(package), Path(dest)
+    if not (package / "problem.yaml").is_file() or not (package / "course.yaml").is_file():
+        raise ValueError(f"{package} is not a problem package (no problem.yaml and course.yaml)")
+    dest.mkdir(parents=True)
+    for part in PROBLEM_PARTS:
+        src = package / part
+        if src.is_dir():
+            shutil.copytree(src, dest / part, ignore=IGNORE)   # follows symlinked directories
+        elif src.is_file():
+            shutil.copy(src, dest / part)
+    course = yaml.safe_load((package / "course.yaml").read_text()) or {}
+    (dest / "course.yaml").write_text(f"# {package.name}: the public part of the grader's settings\n"
+                                      + yaml.safe_dump(public_course_yaml(course), sort_keys=False))
+    return dest
+
+
+def write_public_problems(source: Path, dest: Path) -> Path:
+    """Write the public copy of every problem package in ``source`` to ``dest``, replacing it whole.
+
+    The new copy is written beside ``dest`` and moved into place, so a reader never sees half of it.
+    """
+    source, dest = Path(source), Path(dest)
+    packages = sorted(p for p in source.iterdir() if (p / "problem.yaml").is_file()) if source.is_dir() else []
+    if not packages:
+        raise ValueError(f"{source} holds no problem package (no <id>/problem.yaml)")
+    fresh = dest.with_name(dest.name + ".new")
+    shutil.rmtree(fresh, ignore_errors=True)
+    fresh.mkdir(parents=True)
+    for package in packages:
+        write_public_problem(package, fresh / package.name)
+    old = dest.with_name(dest.name + ".old")
+    shutil.rmtree(old, ignore_errors=True)
+    if dest.exists():
+        dest.rename(old)
+    fresh.rename(dest)
+    shutil.rmtree(old, ignore_errors=True)
+    return dest
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(prog="python -m grader.public_problems",
+                                 description="write the students' copy of a course's problem packages")
+    ap.add_argument("source", help="a course folder holding <id>/problem.yaml packages (e.g. assignments)")
+    ap.add_argument("dest", help="the students' copy (replaced whole)")
+    a = ap.parse_args(argv)
+    try:
+        print(write_public_problems(Path(a.source), Path(a.dest)))
+    except ValueError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
