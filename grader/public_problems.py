@@ -6,7 +6,8 @@ public samples. That copy must not hold what the hidden tests are made from: the
 their seed, or the hidden groups' cases (with those a student could rebuild every hidden input and
 hard-code the answers). This writes, for each package of a course folder, its ``problem.yaml``,
 statement, samples, input validators and checker, and a ``course.yaml`` reduced to its public
-part (``student_edition.public_course_yaml``); the instructor's side keeps the full packages.
+part (:func:`public_course_yaml`); the instructor's side keeps the full packages. The student
+edition (``grader.student_edition``) ships the same public packages.
 
 Run:
     python -m grader.public_problems assignments /srv/course/problems    # SOURCE DEST (replaced)
@@ -30,9 +31,33 @@ from pathlib import Path
 import yaml
 
 from .problems import REPO  # noqa: F401 - the example above uses it
-from .student_edition import IGNORE, PROBLEM_PARTS, public_course_yaml
 
-__all__ = ["write_public_problem", "write_public_problems"]
+__all__ = ["public_course_yaml", "write_public_problem", "write_public_problems", "PROBLEM_PARTS"]
+
+PROBLEM_PARTS = ("problem.yaml", "statement", "data/sample", "input_validators", "output_validator")
+"""What of a package a student may read: statement, samples, validators, checker."""
+IGNORE = shutil.ignore_patterns("__pycache__", "*.pyc", "*.nbi", "*.nbc", ".ipynb_checkpoints", ".cache")
+PUBLIC_COURSE_KEYS = ("entry", "forbidden", "checker", "timed")
+
+
+def public_course_yaml(course: dict) -> dict:
+    """``course.yaml`` without the generator, its seed and the hidden groups (the samples stay)."""
+    out = {k: course[k] for k in PUBLIC_COURSE_KEYS if k in course}
+    out["groups"] = [g for g in course.get("groups") or [] if g.get("points", 0) == 0 and "cases" not in g]
+    out["graded_groups"] = [{"name": g["name"], "points": g["points"]} for g in course.get("groups") or []
+                            if g.get("points", 0) > 0]
+    return out
+
+
+def print_or_fail(write, *args) -> int:
+    """Run ``write(*args)`` for a command line: print the folder it wrote (exit 0) or its
+    ``ValueError`` as ``error: ...`` on stderr (exit 2)."""
+    try:
+        print(write(*args))
+    except ValueError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    return 0
 
 
 def write_public_problem(package: Path, dest: Path) -> Path:
@@ -82,12 +107,7 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("source", help="a course folder holding <id>/problem.yaml packages (e.g. assignments)")
     ap.add_argument("dest", help="the students' copy (replaced whole)")
     a = ap.parse_args(argv)
-    try:
-        print(write_public_problems(Path(a.source), Path(a.dest)))
-    except ValueError as exc:
-        print(f"error: {exc}", file=sys.stderr)
-        return 2
-    return 0
+    return print_or_fail(write_public_problems, Path(a.source), Path(a.dest))
 
 
 if __name__ == "__main__":

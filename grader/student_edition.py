@@ -25,16 +25,13 @@ import sys
 from pathlib import Path
 
 import nbformat
-import yaml
 
 from .course_notebooks import notebook_path
 from .problems import REPO, list_problems
+from .public_problems import IGNORE, print_or_fail, public_course_yaml, write_public_problem  # noqa: F401
 
-PROBLEM_PARTS = ("problem.yaml", "statement", "data/sample", "input_validators", "output_validator")
-IGNORE = shutil.ignore_patterns("__pycache__", "*.pyc", "*.nbi", "*.nbc", ".ipynb_checkpoints", ".cache")
 INSTRUCTOR_ONLY = ("course_notebooks.py", "nbgrader_autograde.py", "student_edition.py",  # grader/ modules
                    "similarity.py", "similarity_report.py")
-PUBLIC_COURSE_KEYS = ("entry", "forbidden", "checker", "timed")
 
 README = """# Delaunay course: student edition
 
@@ -49,15 +46,6 @@ README = """# Delaunay course: student edition
 
 Install once: `python -m venv .venv && .venv/bin/pip install -e .`
 """
-
-
-def public_course_yaml(course: dict) -> dict:
-    """``course.yaml`` without the generator, its seed and the hidden groups (the samples stay)."""
-    out = {k: course[k] for k in PUBLIC_COURSE_KEYS if k in course}
-    out["groups"] = [g for g in course.get("groups") or [] if g.get("points", 0) == 0 and "cases" not in g]
-    out["graded_groups"] = [{"name": g["name"], "points": g["points"]} for g in course.get("groups") or []
-                            if g.get("points", 0) > 0]
-    return out
 
 
 def release_notebook(source: nbformat.NotebookNode) -> nbformat.NotebookNode:
@@ -85,17 +73,7 @@ def write_edition(out: str | Path) -> Path:
     shutil.copy(REPO / "pyproject.toml", out / "pyproject.toml")
     (out / "README.md").write_text(README)
     for problem in list_problems():
-        dest = out / "assignments" / problem.id
-        for part in PROBLEM_PARTS:
-            src = problem.path / part
-            if src.is_dir():
-                shutil.copytree(src, dest / part, ignore=IGNORE)  # follows symlinked directories
-            elif src.is_file():
-                dest.mkdir(parents=True, exist_ok=True)
-                shutil.copy(src, dest / part)
-        course = yaml.safe_load((problem.path / "course.yaml").read_text()) or {}
-        (dest / "course.yaml").write_text(f"# {problem.id}: the public part of the grader's settings\n"
-                                          + yaml.safe_dump(public_course_yaml(course), sort_keys=False))
+        write_public_problem(problem.path, out / "assignments" / problem.id)
         src_nb = notebook_path(problem.id)
         if src_nb.is_file():
             ex = out / "exercises" / problem.id
@@ -108,12 +86,7 @@ def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(prog="python -m grader.student_edition", description="write the student edition")
     ap.add_argument("outdir")
     a = ap.parse_args(argv)
-    try:
-        print(write_edition(a.outdir))
-    except ValueError as exc:
-        print(f"error: {exc}", file=sys.stderr)
-        return 2
-    return 0
+    return print_or_fail(write_edition, a.outdir)
 
 
 if __name__ == "__main__":
