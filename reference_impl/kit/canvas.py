@@ -17,7 +17,7 @@ reopened without a kernel still shows its pictures.
 >>> view = SceneView(width=200, height=100)
 >>> got = []
 >>> view.on_gesture(got.append)
->>> view._handle({"kind": "add", "x": 10, "y": 20})
+>>> view._handle_custom_msg({"kind": "add", "x": 10, "y": 20}, [])     # what a message from the page does
 >>> got, SceneView.parse(got[0])
 ([{'kind': 'add', 'x': 10, 'y': 20}], {'kind': 'add', 'x': 10.0, 'y': 20.0})
 >>> SceneView.parse({"kind": "spin"})
@@ -74,16 +74,10 @@ class SceneView(anywidget.AnyWidget):
         super().__init__(**kwargs)
         self.width, self.height = int(width), int(height)
         self.scene = {"w": self.width, "h": self.height, "items": [], "raster": ""}
-        self._gestures: list[Callable[[dict], None]] = []
-        self.on_msg(lambda _widget, content, _buffers: self._handle(content))
 
     def on_gesture(self, callback: Callable[[dict], None]) -> None:
         """Call ``callback(message)`` for every message the browser sends (check it with ``parse``)."""
-        self._gestures.append(callback)
-
-    def _handle(self, content: Any) -> None:
-        for callback in self._gestures:
-            callback(content)
+        self.on_msg(lambda _widget, content, _buffers: callback(content))
 
     @staticmethod
     def parse(content: Any) -> dict:

@@ -85,10 +85,19 @@ class Canvas:
 
     def to_pixel(self, x: float, y: float) -> tuple[float, float]:
         """Data coordinates -> image pixels (origin top-left, as a browser reports clicks)."""
-        self.figure.canvas.draw_idle()
+        px, py = self.to_pixels([(x, y)])[0]
+        return float(px), float(py)
+
+    def to_pixels(self, points) -> np.ndarray:
+        """``to_pixel`` of every point at once: an (n, 2) array (no drawing needed: the axes
+        box is fixed, and ``apply_aspect`` places it as a draw would)."""
+        P = np.asarray(points, dtype=float).reshape(-1, 2)
         self.ax.apply_aspect()
-        px, py = self.ax.transData.transform((x, y))
-        return float(px), float(self.height - py)
+        if len(P) == 0:
+            return np.zeros((0, 2))
+        Q = self.ax.transData.transform(P)
+        Q[:, 1] = self.height - Q[:, 1]
+        return Q
 
     def to_data(self, px: float, py: float) -> tuple[float, float]:
         """Image pixels (origin top-left) -> data coordinates."""

@@ -68,20 +68,14 @@ _VECTOR_COLLECTIONS = (PolyCollection, LineCollection, PathCollection)
 
 
 def pixel_points(canvas, points) -> np.ndarray:
-    """The points' positions in image pixels (origin top-left), an (n, 2) array.
+    """The points' positions in image pixels (origin top-left), an (n, 2) array: ``Canvas.to_pixels``.
 
     >>> from reference_impl.kit.render import Canvas
     >>> c = Canvas(100, 100); _ = c.clear(bounds=(0, 0, 1, 1))
     >>> pixel_points(c, [(0.5, 0.5)]).round(1).tolist()
     [[50.0, 53.0]]
     """
-    P = np.asarray(points, dtype=float).reshape(-1, 2)
-    canvas.ax.apply_aspect()
-    if len(P) == 0:
-        return np.zeros((0, 2))
-    Q = canvas.ax.transData.transform(P)
-    Q[:, 1] = canvas.height - Q[:, 1]
-    return Q
+    return canvas.to_pixels(points)
 
 
 class _Refs:

@@ -29,8 +29,8 @@ student_browser = launch_browser
 """Headless Debian chromium (Playwright never downloads a browser here)."""
 
 
-class BrowserStudent:
-    """One student's tab on the hub."""
+class HubTab:
+    """One account's tab on the hub: its login and its screenshots."""
 
     def __init__(self, browser, hub, name: str, shots: Path) -> None:
         self.hub, self.name, self.shots = hub, name, Path(shots)
@@ -57,6 +57,9 @@ class BrowserStudent:
         start.first.click()
         page.wait_for_url(re.compile(rf"/user/{re.escape(self.name)}/lab"), timeout=180_000)
         page.locator(".lm-MenuBar-itemLabel", has_text="Nbgrader").wait_for(timeout=120_000)
+
+class BrowserStudent(HubTab):
+    """A student's tab: the Assignments tab, the notebook, the sample check."""
 
     def open_assignments(self):
         """Nbgrader → Assignment List (or its tab when it is open already); the panel's locator."""
@@ -169,7 +172,7 @@ class BrowserStudent:
         return text
 
 
-class BrowserInstructor(BrowserStudent):
+class BrowserInstructor(HubTab):
     """The instructor's tab: formgrader's own pages (``/formgrader/manage_assignments`` and
     ``manage_submissions/<id>``), whose buttons are icons in table columns; each click waits for
     formgrader's "Success" dialog (an error dialog fails with its text) and closes it with *OK*."""
