@@ -49,7 +49,7 @@ def _existing_store(path: str) -> ResultStore:
 
 
 def _cmd_list(a: argparse.Namespace) -> int:
-    rows = [(p.id, p.entry, f"{p.time_limit:g}s", f"{p.memory_mb}MB", str(sum(g.points for g in p.groups)), p.title)
+    rows = [(p.id, p.entry, f"{p.time_limit:g}s", f"{p.memory_mb}MB", str(p.points), p.title)
             for p in list_problems()]
     if a.json:
         keys = ("id", "entry", "time_limit", "memory", "points", "title")

@@ -5,7 +5,8 @@ A problem is a directory ``assignments/<id>/`` in the Kattis layout (``problem.y
 plus ``course.yaml`` with the grader's settings (entry function, forbidden modules, groups with
 points and generated cases). Hidden tests are generated with a fixed seed, their answers come
 from ``reference_impl`` (in the grader's process), and they are cached under
-``<checkout>/.cache/grader/`` keyed by a digest of the package.
+``<checkout>/.cache/grader/`` keyed by a digest of the package. A group marked ``withheld`` (as in
+the students' copy, :mod:`grader.public_problems`) keeps its name and points but has no tests here.
 
 Example:
     >>> p = load_problem("delaunay")
@@ -138,6 +139,7 @@ class Group:
     points: int
     cases: list[dict] = field(default_factory=list)
     data: str | None = None  # a directory of committed .in/.ans files
+    withheld: bool = False  # its tests are not in this copy (the student edition): points only
 
 
 @dataclass
@@ -194,7 +196,8 @@ class Problem:
         for g in course.get("groups") or []:
             if "name" not in g or "points" not in g:
                 raise ValueError(f"problem {path.name!r}: every group needs a name and points, got {g!r}")
-            groups.append(Group(str(g["name"]), int(g["points"]), list(g.get("cases") or []), g.get("data")))
+            groups.append(Group(str(g["name"]), int(g["points"]), list(g.get("cases") or []), g.get("data"),
+                                bool(g.get("withheld", False))))
         if "entry" not in course:
             raise ValueError(f"problem {path.name!r}: course.yaml needs 'entry' (the function students define)")
         forbidden = tuple(dict.fromkeys([*ALWAYS_FORBIDDEN, *(course.get("forbidden") or [])]))
@@ -220,7 +223,7 @@ class Problem:
         names = [g.name for g in self.groups]
         if len(set(names)) != len(names):
             errors.append("group names repeat")
-        for g in self.groups:
+        for g in self.present_groups:
             if g.data and not (self.path / g.data).is_dir():
                 errors.append(f"group {g.name}: data directory {g.data} is missing")
             if g.cases and self.generator_path is None:
@@ -282,8 +285,19 @@ class Problem:
         return _load_module(self.generator_path, f"_generator_{self.id.replace('-', '_')}")
 
     @property
+    def present_groups(self) -> list[Group]:
+        """The groups whose tests this copy holds (all but the withheld ones of a student edition)."""
+        return [g for g in self.groups if not g.withheld]
+
+    @property
     def group_points(self) -> dict[str, int]:
-        return {g.name: g.points for g in self.groups}
+        """Points of each group that can be judged here (a withheld group cannot)."""
+        return {g.name: g.points for g in self.present_groups}
+
+    @property
+    def points(self) -> int:
+        """The problem's total points, withheld groups included (100 for a sound package)."""
+        return sum(g.points for g in self.groups)
 
     # -- tests ----------------------------------------------------------------------------
     def _code_files(self) -> list[Path]:
@@ -323,7 +337,7 @@ class Problem:
     def _load_tests(self) -> list[TestCase]:
         out: list[TestCase] = []
         cache = None
-        for g in self.groups:
+        for g in self.present_groups:
             if g.data:
                 for f in sorted((self.path / g.data).glob("*.in")):
                     ans = f.with_suffix(".ans")
@@ -345,7 +359,7 @@ class Problem:
         target.parent.mkdir(parents=True, exist_ok=True)
         tmp = Path(tempfile.mkdtemp(dir=target.parent, prefix=".tmp-"))
         try:
-            for g in self.groups:
+            for g in self.present_groups:
                 (tmp / g.name).mkdir()
                 for k, case in enumerate(g.cases):
                     args = self.generate_args(case, self.seed + 1000 * k + sum(map(ord, g.name)))

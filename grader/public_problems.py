@@ -38,14 +38,33 @@ PROBLEM_PARTS = ("problem.yaml", "statement", "data/sample", "input_validators",
 """What of a package a student may read: statement, samples, validators, checker."""
 IGNORE = shutil.ignore_patterns("__pycache__", "*.pyc", "*.nbi", "*.nbc", ".ipynb_checkpoints", ".cache")
 PUBLIC_COURSE_KEYS = ("entry", "forbidden", "checker", "timed")
+PUBLIC_CASE_KEYS = ("kind", "scale")
+"""What a student may know of a hidden case: the kind of input and its scale (the statement says as much)."""
 
 
 def public_course_yaml(course: dict) -> dict:
-    """``course.yaml`` without the generator, its seed and the hidden groups (the samples stay)."""
+    """``course.yaml`` without the generator, its seed and the hidden tests.
+
+    The public sample groups (no points, data under ``data/sample``) stay whole. Every other group stays as ``withheld``: its name, its
+    points and, per case, only the kind of input and its scale (no sizes, no seeds, no data; one
+    entry per test), so that ``python -m grader list`` shows the points and a lesson can say what a
+    group tests.
+
+    >>> public_course_yaml({"entry": "f", "seed": 7, "generator": "generators/gen.py", "groups": [
+    ...     {"name": "sample", "points": 0, "data": "data/sample"},
+    ...     {"name": "big", "points": 100, "cases": [{"kind": "grid", "n": 9, "scale": 1e300}]}]})
+    {'entry': 'f', 'groups': [{'name': 'sample', 'points': 0, 'data': 'data/sample'}, \
+{'name': 'big', 'points': 100, 'withheld': True, 'cases': [{'kind': 'grid', 'scale': 1e+300}]}]}
+    """
     out = {k: course[k] for k in PUBLIC_COURSE_KEYS if k in course}
-    out["groups"] = [g for g in course.get("groups") or [] if g.get("points", 0) == 0 and "cases" not in g]
-    out["graded_groups"] = [{"name": g["name"], "points": g["points"]} for g in course.get("groups") or []
-                            if g.get("points", 0) > 0]
+    out["groups"] = []
+    for g in course.get("groups") or []:
+        if g.get("points", 0) == 0 and "cases" not in g and "sample" in Path(str(g.get("data", ""))).parts:
+            out["groups"].append(g)
+        else:
+            out["groups"].append({"name": g["name"], "points": g.get("points", 0), "withheld": True,
+                                  "cases": [{k: c[k] for k in PUBLIC_CASE_KEYS if k in c}
+                                            for c in g.get("cases") or []]})
     return out
 
 

@@ -3,18 +3,24 @@
 It holds the lessons (``notebooks/``), the released assignment notebooks (``exercises/<id>/<id>.ipynb``,
 solutions replaced by a stub exactly as ``nbgrader generate_assignment`` does), each problem's
 statement, samples, input validators and checker (``assignments/<id>/``, with a ``course.yaml``
-that keeps only the public sample group), the library (``reference_impl/``) and the judge
-(``grader/``) so ``python -m grader judge <id> <file>`` and the notebooks' ``%check_samples``
-work on the samples. Left out: ``solutions/``, the nbgrader source notebooks, the test
-generators and their seeds, the hidden tests and any cache of them, the tests of this repository.
+whose scored groups are ``withheld``: names, points and kinds of input, no tests), the library
+(``reference_impl/``) and the judge (``grader/``) so ``python -m grader judge <id> <file>`` and the
+notebooks' ``%check_samples`` work on the samples, and the one file of ``solutions/`` that a lesson
+judges (the original tutorial's wrong code). Its README (``student_edition.md`` here) is the path a
+student follows on a fresh machine. Left out: the other solutions, the nbgrader source notebooks,
+the test generators and their seeds, the hidden tests and any cache of them, the tests of this
+repository.
 
 Run:
-    python -m grader.student_edition OUTDIR      # then: cd OUTDIR && python -m grader list
+    python -m grader.student_edition OUTDIR      # then: cd OUTDIR and follow its README.md
 
 Example:
-    >>> public_course_yaml({"entry": "f", "seed": 7, "groups": [{"name": "sample", "points": 0, "data": "data/sample"},
-    ...                     {"name": "big", "points": 10, "cases": [{"kind": "uniform", "n": 9}]}]})["groups"]
-    [{'name': 'sample', 'points': 0, 'data': 'data/sample'}]
+    >>> import tempfile
+    >>> out = write_edition(Path(tempfile.mkdtemp()) / "student")
+    >>> sorted(p.name for p in out.iterdir())
+    ['README.md', 'assignments', 'exercises', 'grader', 'notebooks', 'pyproject.toml', 'reference_impl', 'solutions']
+    >>> [(g.name, g.points, g.withheld) for g in load_problem("delaunay", out / "assignments").groups][:2]
+    [('sample', 0, False), ('tiny', 15, True)]
 """
 
 from __future__ import annotations
@@ -25,28 +31,18 @@ import sys
 from pathlib import Path
 
 import nbformat
+import yaml
 
 from .course_notebooks import notebook_path
-from .problems import REPO, list_problems
-from .public_problems import IGNORE, print_or_fail, public_course_yaml, write_public_problem  # noqa: F401
+from .problems import REPO, list_problems, load_problem  # noqa: F401 (load_problem: the doctest)
+from .public_problems import IGNORE, print_or_fail, write_public_problem
 
 INSTRUCTOR_ONLY = ("course_notebooks.py", "nbgrader_autograde.py", "student_edition.py",  # grader/ modules
-                   "similarity.py", "similarity_report.py")
-
-README = """# Delaunay course: student edition
-
-* `notebooks/`: the lessons (open with `jupyter lab notebooks`).
-* `exercises/<problem>/<problem>.ipynb`: the assignments. Write the entry function in the first
-  code cell, save, and run the "check on the samples" cell.
-* `assignments/<problem>/`: statements (`statement/problem.en.md`) and public samples.
-* `python -m grader list` and `python -m grader judge <problem> <file.py or .ipynb>`: the local
-  judge, on the samples only. Your grade comes from the course's hidden tests. It runs your code
-  in a kernel jail (bubblewrap); on a machine without one it refuses unless you add `--trusted`
-  (your own code, judged without a jail; the notebooks' check cell does this by itself).
-
-Install once: `python -m venv .venv && .venv/bin/pip install -e .`
-"""
-
+                   "similarity.py", "similarity_report.py", "student_edition.md")
+README = Path(__file__).with_name("student_edition.md")
+"""The edition's README.md: what is in it and the steps on a fresh machine."""
+LESSON_SOLUTIONS = {"delaunay": ("wrong_tutorial.py",)}
+"""The files of ``solutions/`` that a lesson judges (lesson 10): wrong ones only, never an accepted one."""
 
 def release_notebook(source: nbformat.NotebookNode) -> nbformat.NotebookNode:
     """The student version of a source notebook: nbgrader's release preprocessors, in its order."""
@@ -60,6 +56,31 @@ def release_notebook(source: nbformat.NotebookNode) -> nbformat.NotebookNode:
     return nb
 
 
+def lesson_solutions(out: Path, solutions: Path = REPO / "solutions") -> list[Path]:
+    """Copy the solution files the lessons judge (:data:`LESSON_SOLUTIONS`) into ``out/solutions``.
+
+    Each must be listed in its ``expected.yaml`` with a verdict other than ``AC``: an accepted
+    solution would hand students the answer.
+    """
+    copied = []
+    for problem_id, names in LESSON_SOLUTIONS.items():
+        expected = yaml.safe_load((solutions / problem_id / "expected.yaml").read_text()) or {}
+        for name in names:
+            verdict = (str(expected.get(name) or "").split() or [""])[0]   # "WA" or "WA exhaustive"
+            if verdict in ("", "AC"):
+                raise ValueError(f"solutions/{problem_id}/{name} is {verdict or 'not listed'} in expected.yaml; "
+                                 "the student edition ships wrong solutions only")
+            dest = out / "solutions" / problem_id / name
+            dest.parent.mkdir(parents=True, exist_ok=True)
+            shutil.copy(solutions / problem_id / name, dest)
+            copied.append(dest)
+    (out / "solutions" / "README.md").write_text(
+        "# solutions/\n\nOnly the files the lessons judge, and none of them is accepted: "
+        + ", ".join(f"`{p.relative_to(out / 'solutions')}`" for p in copied)
+        + " (lesson 10 judges it and shows where it fails). The reference solutions stay with the course.\n")
+    return copied
+
+
 def write_edition(out: str | Path) -> Path:
     """Write the student edition to ``out`` (which must not exist yet)."""
     out = Path(out)
@@ -71,7 +92,8 @@ def write_edition(out: str | Path) -> Path:
     for name in INSTRUCTOR_ONLY:
         (out / "grader" / name).unlink()
     shutil.copy(REPO / "pyproject.toml", out / "pyproject.toml")
-    (out / "README.md").write_text(README)
+    shutil.copy(README, out / "README.md")
+    lesson_solutions(out)
     for problem in list_problems():
         write_public_problem(problem.path, out / "assignments" / problem.id)
         src_nb = notebook_path(problem.id)

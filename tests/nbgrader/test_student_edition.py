@@ -1,5 +1,7 @@
-"""The student edition holds what a student needs and nothing hidden: no solutions, no source
-notebooks, no generators or seeds, no hidden test data; its local judge runs the samples only.
+"""The student edition holds what a student needs and nothing hidden: no reference solutions, no
+source notebooks, no generators or seeds, no hidden test data; its local judge runs the samples
+only, and it still knows every group's points. (tests/nbgrader/test_docs.py follows its README in
+a fresh venv and runs lessons 10 and 12 there.)
 
 Run: .venv/bin/python -m pytest tests/nbgrader/test_student_edition.py -x -q
 """
@@ -7,6 +9,7 @@ Run: .venv/bin/python -m pytest tests/nbgrader/test_student_edition.py -x -q
 from __future__ import annotations
 
 import json
+import os
 import re
 import subprocess
 import sys
@@ -18,8 +21,8 @@ import yaml
 
 from grader.course_notebooks import notebook_path
 from grader.kattis import expected_verdicts
-from grader.problems import REPO, list_problems
-from grader.student_edition import write_edition
+from grader.problems import REPO, list_problems, load_problem
+from grader.student_edition import LESSON_SOLUTIONS, lesson_solutions, write_edition
 
 pytestmark = pytest.mark.xdist_group("student-edition")  # one worker writes the edition once
 
@@ -41,7 +44,11 @@ def test_layout(edition):
 def test_nothing_hidden(edition):
     files = [f for f in edition.rglob("*") if f.is_file()]
     names = {part for f in files for part in f.relative_to(edition).parts}
-    assert not names & {"solutions", "generators", "source", ".cache", "tests", "gradebook.db", "nbgrader_config.py"}
+    assert not names & {"generators", "source", ".cache", "tests", "gradebook.db", "nbgrader_config.py"}
+    shipped = {str(f.relative_to(edition / "solutions")) for f in files if f.is_relative_to(edition / "solutions")}
+    assert shipped == {"README.md", *(f"{p}/{n}" for p, names in LESSON_SOLUTIONS.items() for n in names)}
+    for rel in shipped - {"README.md"}:
+        assert expected_verdicts(rel.split("/")[0])[rel.split("/")[1]] != "AC"
     texts = {f: f.read_text(errors="replace") for f in files}
     # the accepted solutions: the wrong ones reproduce the original tutorial's code, which the
     # lessons show on purpose
@@ -52,6 +59,8 @@ def test_nothing_hidden(edition):
     # validators and checkers are shipped on purpose (students check their output with them)
     library += "".join(f.read_text() for pattern in ("*/input_validators/**/*.py", "*/output_validator/*.py")
                        for f in (REPO / "assignments").glob(pattern))
+    # and the wrong solutions a lesson judges (their input/output boilerplate is every solution's)
+    library += "".join((REPO / "solutions" / p / n).read_text() for p, names in LESSON_SOLUTIONS.items() for n in names)
     sol_lines = {ln.strip() for s in solutions for ln in s.read_text().splitlines()
                  if len(ln.strip()) > 50 and ln.strip() not in library}
     assert len(sol_lines) > 20
@@ -59,7 +68,9 @@ def test_nothing_hidden(edition):
     for p in list_problems():
         course = yaml.safe_load((edition / "assignments" / p.id / "course.yaml").read_text())
         assert "seed" not in course and "generator" not in course
-        assert all("cases" not in g for g in course["groups"])
+        for g in course["groups"]:  # scored groups: name, points, withheld, and per case kind/scale only
+            assert g.get("withheld") or g["points"] == 0 and "cases" not in g, g
+            assert all(set(c) <= {"kind", "scale"} for c in g.get("cases", [])), g["name"]
         for t in p.tests():
             if t.group != "sample":
                 hidden.update(tok for tok in re.findall(r"[-+0-9.eE]+", t.input_text) if len(tok) >= 10)
@@ -88,3 +99,28 @@ def test_local_judge_runs_the_samples_only(edition):
     assert {t["group"] for t in out["tests"]} == {"sample"}
     assert out["verdict"] == "CE"  # the released stub defines no entry function yet
     assert Path(edition / "grader").resolve() != (REPO / "grader").resolve()
+
+
+def test_points_and_withheld_groups(edition):
+    r = subprocess.run([sys.executable, "-m", "grader", "list", "--json"], cwd=edition, capture_output=True,
+                       text=True, timeout=300, env={**os.environ, "PYTHONPATH": str(edition)})
+    assert r.returncode == 0, r.stderr
+    listed = {row["id"]: row["points"] for row in json.loads(r.stdout)}
+    assert listed == {p.id: "100" for p in list_problems()}
+    for p in list_problems():
+        public = load_problem(p.id, edition / "assignments")
+        assert [(g.name, g.points) for g in public.groups] == [(g.name, g.points) for g in p.groups]
+        assert [len(g.cases) for g in public.groups if g.withheld] == [len(g.cases) for g in p.groups if g.cases]
+        assert {t.group for t in public.tests()} == {"sample"} and public.validate() == []
+        assert sum(public.group_points.values()) == 0 and public.points == 100
+
+
+def test_an_accepted_solution_is_never_shipped(tmp_path, monkeypatch):
+    fake = tmp_path / "solutions" / "delaunay"
+    fake.mkdir(parents=True)
+    (fake / "wrong_tutorial.py").write_text("def delaunay(points):\n    return []\n")
+    (fake / "expected.yaml").write_text("wrong_tutorial.py: AC\n")
+    with pytest.raises(ValueError, match="wrong_tutorial.py is AC"):
+        lesson_solutions(tmp_path / "out", tmp_path / "solutions")
+    (fake / "expected.yaml").write_text("wrong_tutorial.py: WA exhaustive\n")
+    assert [p.name for p in lesson_solutions(tmp_path / "out", tmp_path / "solutions")] == ["wrong_tutorial.py"]
