@@ -18,12 +18,12 @@ import json
 import os
 import select
 import signal
-import sys
 import time
 from dataclasses import dataclass
 from typing import Any, Sequence
 
 from .jail import BOOTSTRAP_PATH, Sandbox, python_roots
+from .jail.paths import interpreter
 from .jail.cgroups import SAMPLE_S, ProcTree
 from .jail.engines import ENGINE_API, IMPORTED_BY_LIBRARIES, engine_libraries, engine_modules
 from .text import clean
@@ -193,7 +193,7 @@ class _Child:
         c_in_r, self.ctl_in = os.pipe()
         self.ctl_out, c_out_w = os.pipe()
         config = dict(config, ctl_in=c_in_r, ctl_out=c_out_w)
-        argv = [sys.executable, "-I", "-c", BOOTSTRAP_SOURCE, json.dumps(config)]
+        argv = [interpreter(), "-I", "-c", BOOTSTRAP_SOURCE, json.dumps(config)]
         try:
             self.proc = box.spawn(argv, stdin, stdout, stderr, pass_fds=(c_in_r, c_out_w), cpu_s=cpu_s)
         finally:

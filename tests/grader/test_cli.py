@@ -124,3 +124,14 @@ def test_timed_cli_messages(tmp_path):
     untimed = grader("timed", "start", "delaunay", "ada", "--db", str(tmp_path / "u.sqlite"))
     assert untimed.returncode == 2 and "no timed settings" in untimed.stderr
     assert not (tmp_path / "u.sqlite").exists()
+
+
+def test_judge_from_the_course_folder_with_the_readme_path():
+    """``assignments/README.md`` runs the judge from ``assignments/`` with ``PATH=$PWD/../.venv/bin``:
+    the interpreter's path then goes through the course folder, which the jail covers; the child
+    must still start (it once failed every test as RE: ``execvp .../assignments/../.venv/bin/python``)."""
+    via = os.path.join("..", os.path.relpath(sys.executable, REPO))  # sys.executable: .../assignments/../.venv/...
+    r = subprocess.run([via, "-m", "grader", "judge", "delaunay", str(ACCEPTED), "--json"],
+                       capture_output=True, text=True, cwd=REPO / "assignments", timeout=600)
+    assert r.returncode == 0, r.stdout[-1500:] + r.stderr[-1500:]
+    assert json.loads(r.stdout)["verdict"] == "AC"
