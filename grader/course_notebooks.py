@@ -30,6 +30,7 @@ from pathlib import Path
 import nbformat
 import yaml
 
+from .course_markdown import notebook_markdown
 from .problems import Group, Problem, list_problems, load_problem, problems_root  # noqa: F401 (load_problem: the doctest)
 from .sample_check import is_sample_group
 
@@ -117,8 +118,14 @@ def _meta(grade_id: str, *, solution: bool = False, grade: bool = False, locked:
     return {"nbgrader": nbg}
 
 
-def _markdown(cell_id: str, text: str, **meta) -> nbformat.NotebookNode:
-    return nbformat.v4.new_markdown_cell(text, id=cell_id.replace("_", "-"), metadata=_meta(cell_id, **meta))
+def _markdown(cell_id: str, text: str, pictures: Path | None = None, **meta) -> nbformat.NotebookNode:
+    """A locked markdown cell; maths, tables and pictures rewritten to show without MathJax or CSS
+    (formgrader and the feedback page have neither offline; see :mod:`grader.course_markdown`)."""
+    source, attachments = notebook_markdown(text, pictures)
+    cell = nbformat.v4.new_markdown_cell(source, id=cell_id.replace("_", "-"), metadata=_meta(cell_id, **meta))
+    if attachments:
+        cell.attachments = attachments
+    return cell
 
 
 def _code(cell_id: str, text: str, **meta) -> nbformat.NotebookNode:
@@ -185,7 +192,7 @@ cells run, not that your code is right. The check that means something is the sa
 Save the notebook first (Ctrl+S): the next cell judges the code cells of the saved file, the same
 way the grader does, on the public sample tests, and shows one line per test and a picture."""
     cells = [
-        _markdown("statement", statement, locked=True),
+        _markdown("statement", statement, pictures=problem.path / "statement", locked=True),
         _markdown("grading", how, locked=True),
         _code(SOLUTION_ID, f"# Define {signature} in this cell.\n### BEGIN SOLUTION\n{ref}### END SOLUTION\n",
               solution=True),
