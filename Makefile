@@ -23,10 +23,10 @@ $(STAMP): pyproject.toml
 # JupyterLab does not save widget state by default, and a saved lesson reopened without running
 # then shows "Error displaying widget: model not found" where every widget was (JupyterLab renders
 # only the widget view of an output, never the PNG beside it). The venv's overrides.json turns
-# saving on for this JupyterLab: reopened, every widget shows its last picture (checked in chromium).
-$(LAB_OVERRIDES): $(STAMP)
+# saving on for this JupyterLab (deploy/jupyterhub/deploy.sh puts the same file in the hub's venv): reopened, every widget shows its last picture (checked in chromium).
+$(LAB_OVERRIDES): $(STAMP) deploy/lab-overrides.json
 	mkdir -p $(dir $(LAB_OVERRIDES))
-	echo '{"@jupyter-widgets/jupyterlab-manager:plugin": {"saveState": true}}' > $(LAB_OVERRIDES)
+	cp deploy/lab-overrides.json $(LAB_OVERRIDES)
 
 # Compile every numba kernel into numba's cache (a few seconds when nothing changed), so that
 # no lesson, problem or test waits for a compile; see reference_impl/warmup.py.

@@ -257,7 +257,7 @@ def main(argv: list[str] | None = None) -> int:
         print("usage: python -m grader.course_markdown STATEMENT.md", file=sys.stderr)
         return 2
     path = Path(args[0])
-    md, attachments = notebook_markdown(path.read_text(), path.parent)
+    md, attachments = notebook_markdown(path.read_text(encoding="utf-8"), path.parent)
     print(md)
     for name in attachments:
         print(f"[attachment: {name}]", file=sys.stderr)

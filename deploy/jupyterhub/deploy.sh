@@ -35,6 +35,9 @@ venv() {  # the shared venv, rebuilt only when pyproject.toml or the course's so
         "$HUB_VENV/bin/pip" install --quiet "$REPO" 'jupyterhub>=5,<7'
         echo "$key" > "$HUB_VENV/.course-key"
     fi
+    # widget state saved with a lesson, as make setup does for the checkout's venv: a lesson
+    # reopened without its kernel shows the widgets' last pictures, not "model not found"
+    install -D -m 0644 "$REPO/deploy/lab-overrides.json" "$HUB_VENV/share/jupyter/lab/settings/overrides.json"
     chown -R root:root "$HUB_VENV"; chmod -R go-w,go+rX "$HUB_VENV"   # read-only for every account
 }
 

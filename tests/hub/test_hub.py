@@ -148,8 +148,16 @@ def test_students_fetch_their_feedback(graded):
             html = [f for stamp in listed for f in st.call("GET", f"/api/contents/{stamp['path']}").json()["content"]
                     if f["name"].endswith(".html")]
             assert html, (name, a)
-            text = st.call("GET", f"/files/{html[0]['path']}").text
+            text = st.call("GET", f"/files/{html[0]['path']}").content.decode("utf-8")
             assert "Score" in text or "score" in text
+            assert "≤" in text and "\\le" not in text, "the statement's maths reads as text (no MathJax offline)"
+
+
+def test_the_shared_venv_saves_widget_state(hub):
+    """A lesson reopened on the hub without its kernel shows its widgets' last pictures."""
+    overrides = REPO / "build" / "hub-venv" / "share" / "jupyter" / "lab" / "settings" / "overrides.json"
+    assert json.loads(overrides.read_text())["@jupyter-widgets/jupyterlab-manager:plugin"]["saveState"] is True
+    assert overrides.stat().st_mode & 0o004, "every account's JupyterLab reads it"
 
 
 def _as(user: str, code: str) -> subprocess.CompletedProcess:

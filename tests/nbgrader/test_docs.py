@@ -98,7 +98,16 @@ def solution(problem: str, name: str) -> str:
 
 
 @pytest.mark.xdist_group("docs-instructor")
-def test_instructor_workflow_as_written(tmp_path):
+@pytest.fixture
+def shared():
+    """A folder outside tmp_path (which is 0700) that the students reach, removed even when the test fails."""
+    path = Path(tempfile.mkdtemp(prefix="docs-exchange-"))
+    path.chmod(0o755)
+    yield path
+    shutil.rmtree(path, ignore_errors=True)
+
+
+def test_instructor_workflow_as_written(tmp_path, shared):
     users = ordinary_user()
     if why := users.can_run():
         pytest.skip(f"the students' fetch and submit need real accounts: {why}")
@@ -116,8 +125,6 @@ def test_instructor_workflow_as_written(tmp_path):
                                                   "autograded", "feedback", "grades.csv", ".cache", "__pycache__"))
     (root / ".venv").symlink_to(REPO / ".venv")
     course = root / "assignments"
-    shared = Path(tempfile.mkdtemp(prefix="docs-exchange-"))  # outside tmp_path (0700): students reach it
-    shared.chmod(0o755)
     exchange = shared / "exchange"
     exchange.mkdir()
     exchange.chmod(0o777)  # the README: it must exist and be writable by everyone
@@ -171,8 +178,9 @@ def test_instructor_workflow_as_written(tmp_path):
             assert scores["ada"]["score"] == 0  # on the roster, submitted nothing
         elif "generate_feedback" in line:
             for name in klass:
-                page = (course / "feedback" / name / "delaunay" / "delaunay.html").read_text()
+                page = (course / "feedback" / name / "delaunay" / "delaunay.html").read_text(encoding="utf-8")
                 assert f"{scores[name]['score']:g}" in page
+                assert "≤" in page and "\\le" not in page  # the statement's maths as text: no MathJax offline
         elif "nbgrader export" in line:
             rows = {r["student_id"]: float(r["score"]) for r in csv.DictReader(open(course / "grades.csv"))
                     if r["assignment"] == "delaunay"}
@@ -194,7 +202,6 @@ def test_instructor_workflow_as_written(tmp_path):
     assert due and due[0], "the copy's gradebook has no due date for the timed exam"
     after = checkout_db.stat().st_mtime_ns if checkout_db.exists() else None
     assert after == before, "a command run in the copy wrote the checkout's own gradebook"
-    shutil.rmtree(shared, ignore_errors=True)
 
 
 @pytest.mark.xdist_group("docs-student")
