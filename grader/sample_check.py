@@ -79,6 +79,19 @@ def table_html(result: JudgeResult) -> str:
 def picture_png(problem: Problem, result: JudgeResult, entry_fn=None) -> bytes | None:
     """A picture of the first failing sample (the judge's copy of your answer) or, when all pass, of
     the first sample with ``entry_fn``'s answer (your function as this kernel has it)."""
+    fig = picture_figure(problem, result, entry_fn)
+    if fig is None:
+        return None
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", dpi=80, bbox_inches="tight")
+    return buf.getvalue()
+
+
+def picture_figure(problem: Problem, result: JudgeResult, entry_fn=None):
+    """The matplotlib Figure behind :func:`picture_png` (None when the problem draws nothing).
+
+    With no answer of the student's to draw (the sample ended in RE, TLE, ... or nothing was
+    returned), the right-hand panel says so and why, instead of drawing an empty answer."""
     draw = getattr(problem.checker, "draw", None)
     if draw is None or not result.tests:
         return None
@@ -104,9 +117,13 @@ def picture_png(problem: Problem, result: JudgeResult, entry_fn=None) -> bytes |
     except Exception:  # noqa: BLE001 - a picture is a bonus, never a failure
         return None
     fig.suptitle(f"{name}: {'your answer' if received is not None else 'expected answer'}", fontsize=9)
-    buf = io.BytesIO()
-    fig.savefig(buf, format="png", dpi=80, bbox_inches="tight")
-    return buf.getvalue()
+    if received is None:
+        verdict = next(getattr(t.verdict, "value", t.verdict) for t in result.tests if t.name == name)
+        axes[1].clear()
+        axes[1].set_axis_off()
+        axes[1].text(0.5, 0.5, f"no answer of yours to draw\n(verdict {verdict} on {name})", ha="center",
+                     va="center", fontsize=10, transform=axes[1].transAxes)
+    return fig
 
 
 def check_samples(line: str) -> None:

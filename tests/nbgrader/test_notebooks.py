@@ -94,3 +94,35 @@ def test_the_course_notebook_says_what_the_clock_and_validate_are():
     # the problem package's own statement (the standalone judge) still tells the student to start the clock
     timed = load_problem("bowyer-watson-timed")
     assert "timed start" in (timed.path / "statement" / "problem.en.md").read_text()
+
+
+@pytest.mark.skipif(os.geteuid() != 0, reason="the sample check judges in the sandbox; as root here like CI")
+def test_the_sample_picture_draws_no_empty_answer(tmp_path):
+    """The released stub (its top-level raise is CE) gets "no answer of yours to draw (verdict CE ...)", not a drawn
+    "received: 0 triangles"; an accepted function's answer is drawn beside the expected one."""
+    from grader.course_notebooks import CODE_STUB, SOLUTION_ID
+    from grader.sample_check import judge_samples, picture_figure
+
+    nb = nbformat.read(notebook_path("delaunay"), 4)
+    solution = next(c for c in nb.cells if c.metadata["nbgrader"]["grade_id"] == SOLUTION_ID)
+    reference = solution.source
+    solution.source = CODE_STUB
+    stub = tmp_path / "delaunay.ipynb"
+    nbformat.write(nb, str(stub))
+    result, problem = judge_samples("delaunay", stub)
+    assert result.verdict in ("CE", "RE"), result.verdict
+    fig = picture_figure(problem, result)
+    right = fig.axes[1]
+    texts = [t.get_text() for t in right.texts]
+    assert texts and texts[0].startswith("no answer of yours to draw") and f"verdict {result.verdict}" in texts[0], texts
+    assert "received" not in right.get_title()
+
+    namespace: dict = {}
+    exec(reference.replace("### BEGIN SOLUTION", "").replace("### END SOLUTION", ""), namespace)
+    solution.source = reference
+    nbformat.write(nb, str(stub))
+    result, problem = judge_samples("delaunay", stub)
+    assert result.verdict == "AC", result.verdict
+    fig = picture_figure(problem, result, namespace["delaunay"])
+    assert fig.axes[1].get_title() == "received: 3 triangles"
+    assert not any(t.get_text().startswith("no answer") for t in fig.axes[1].texts)
