@@ -137,19 +137,20 @@ def test_cpu_of_forked_helpers_is_charged(accounting, monkeypatch):
     if accounting == "proc-uid":  # the fallback where no cgroup is writable
         monkeypatch.setattr(cgroups, "open_group", lambda name, memory_mb, processes, uid:
                             cgroups._ProcUid(uid, memory_mb))
-    src = ("import ctypes, os\nlibc = ctypes.CDLL(None)\n"
-           "def f(n):\n    if libc.fork() == 0:\n        x = 0\n        for i in range(n):\n            x += i\n"
+    # the helper computes until it has used n CPU-seconds of its own (a fixed loop count took 0.06 s
+    # on a fast machine: too close to any threshold), then exits; the worker only waits for it
+    src = ("import ctypes, os, time\nlibc = ctypes.CDLL(None)\n"
+           "def f(n):\n    if libc.fork() == 0:\n        while time.process_time() < n:\n            pass\n"
            "        os._exit(0)\n    libc.wait(None)\n    return 0\n")
     with Sandbox(Limits(cpu_s=30, memory_mb=256)) as box:
         mechanism = box.group.mechanism
         w = FunctionWorker(box, src, "f", forbidden=[])
-        out = w.call([3_000_000], 30)
+        out = w.call([0.5], 30)
         w.stop()
     assert out.status == "ok"
     assert accounting != "proc-uid" or mechanism == "proc-uid"
-    # a few million interpreted additions cost well over 0.05 CPU-seconds on any machine; the
-    # worker itself only waited (charging the worker alone gave about 0.001 s)
-    assert out.time_s > 0.05, out
+    # the helper's half second is charged (charging the worker alone gave about 0.001 s)
+    assert out.time_s >= 0.45, out
 
 
 @root_only

@@ -97,7 +97,6 @@ def solution(problem: str, name: str) -> str:
     return (REPO / "solutions" / problem / name).read_text().split('\nif __name__ == "__main__":')[0] + "\n"
 
 
-@pytest.mark.xdist_group("docs-instructor")
 @pytest.fixture
 def shared():
     """A folder outside tmp_path (which is 0700) that the students reach, removed even when the test fails."""
@@ -107,6 +106,7 @@ def shared():
     shutil.rmtree(path, ignore_errors=True)
 
 
+@pytest.mark.xdist_group("docs-instructor")
 def test_instructor_workflow_as_written(tmp_path, shared):
     users = ordinary_user()
     if why := users.can_run():
