@@ -43,6 +43,15 @@ class HubTab:
         self.page.screenshot(path=str(path))
         return path
 
+    def dialogs(self) -> str:
+        """The text of every dialog open in the page (JupyterLab's error dialogs, formgrader's
+        modals), for a failure's report."""
+        try:
+            found = self.page.locator(".jp-Dialog, .modal.in, .modal.show")
+            return "\n".join(found.nth(i).inner_text(timeout=2_000)[:2000] for i in range(found.count()))
+        except Exception as e:                       # the page itself may be gone
+            return f"(no dialogs read: {e})"
+
     def log_in(self) -> None:
         """The hub's login form; the hub starts the server and lands in JupyterLab."""
         page = self.page

@@ -82,7 +82,22 @@ class Hub:
                         os.kill(int(p.name), signal.SIGKILL)
                 except (OSError, ProcessLookupError):
                     pass
+        try:                                   # the log outlives COURSE_HOME: a failed run can be read
+            keep = REPO / "build" / "hub-test.log"
+            keep.parent.mkdir(parents=True, exist_ok=True)
+            shutil.copyfile(self.log, keep)
+        except OSError:
+            pass
         shutil.rmtree(self.home, ignore_errors=True)
+
+    def log_tail(self, lines: int = 60, having: str = "") -> str:
+        """The hub log's last ``lines`` lines (those that contain ``having``): the hub's and its
+        single-user servers' messages, for a failure's report."""
+        try:
+            text = self.log.read_text(errors="replace").splitlines()
+        except OSError as e:
+            return f"(no hub log: {e})"
+        return "\n".join([t for t in text if having in t][-lines:])
 
 
 def start_hub(timeout: float = 240) -> Hub:

@@ -78,8 +78,10 @@ def graded(hub, browser):
         for a in PROBLEMS:
             teacher.assignment(a, "assign")                  # Generate
             teacher.assignment(a, "release")
-    except Exception:
+    except Exception as e:
         teacher.shot("failed-instructor")
+        e.add_note(f"formgrader's open dialogs: {teacher.dialogs() or '(none)'}\n"
+                   f"hub log (kept in build/hub-test.log):\n{hub.log_tail(60)}")
         raise
     instructor = hs.HubUser(hub, hs.INSTRUCTOR)              # reads the scores formgrader shows
     for name, in_page in in_pages.items():
@@ -91,8 +93,10 @@ def graded(hub, browser):
                 code = (REPO / "solutions" / a / SOLUTIONS[name][a]).read_text()
                 in_page.checks[a] = in_page.write_and_check(a, code, f"judged {a}.ipynb")
                 in_page.submit(a)
-        except Exception:
+        except Exception as e:
             in_page.shot("failed")
+            e.add_note(f"{name}'s open dialogs: {in_page.dialogs() or '(none)'}\n"
+                       f"hub log (kept in build/hub-test.log), {name}'s server:\n{hub.log_tail(80, name)}")
             raise
     students = {u: hs.HubUser(hub, u) for u in API_STUDENTS}
     for name, st in students.items():
@@ -115,8 +119,10 @@ def graded(hub, browser):
                 teacher.autograde(a, name)
             teacher.assignment(a, "generate-feedback")
             teacher.assignment(a, "release-feedback")
-        except Exception:
+        except Exception as e:
             teacher.shot("failed-instructor")
+            e.add_note(f"formgrader's open dialogs: {teacher.dialogs() or '(none)'}\n"
+                       f"hub log (kept in build/hub-test.log):\n{hub.log_tail(60)}")
             raise
         for row in instructor.call("GET", f"/formgrader/api/submissions/{a}").json():
             scores.setdefault(row["student"], {})[a] = row["score"]
