@@ -18,8 +18,11 @@ page. Each step waits on the page's state, never on a fixed sleep; each leaves a
 """
 from __future__ import annotations
 
+import json
+import pwd
 import re
 import sys
+import time
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "browser"))
@@ -112,16 +115,7 @@ class BrowserStudent(HubTab):
         page.keyboard.insert_text(code)
         page.keyboard.press("Escape")
         page.keyboard.press("Control+s")
-        # saved: the file on the server holds the typed code (the editor shows only the visible lines)
-        page.wait_for_function("""async ([base, a, code]) => {
-            const xsrf = (document.cookie.match(/(?:^|; )_xsrf=([^;]*)/) || [])[1] || '';
-            const r = await fetch(`${base}/api/contents/${a}/${a}.ipynb?content=1&_=${Date.now()}`,
-                                  {headers: {'X-XSRFToken': decodeURIComponent(xsrf)}});
-            if (!r.ok) { window.__hubtestStatus = r.status; return false; }
-            const nb = (await r.json()).content;
-            const src = c => Array.isArray(c.source) ? c.source.join('') : c.source;
-            return nb.cells.some(c => c.cell_type === 'code' && src(c).trim() === code); }""",
-                               arg=[self.base, assignment, code.strip()], timeout=60_000, polling=500)
+        self.wait_saved(assignment, code)
         check = cells.filter(has_text="%check_samples").first
         for _ in range(40):                            # below a long solution: scroll until it is shown
             if check.locator(".cm-content").first.is_visible():
@@ -137,6 +131,33 @@ class BrowserStudent(HubTab):
         check.scroll_into_view_if_needed()
         self.shot(f"check-{assignment}")
         return output.inner_text()
+
+    def wait_saved(self, assignment: str, code: str, timeout: float = 60) -> None:
+        """Wait until the notebook file in the student's home holds ``code`` in a code cell.
+
+        The file is read from the disk, never through the server's contents API: jupyter_server
+        2.21 lets a read of a notebook run while a save of it is being written, and a read that
+        finds the half-written file "recovers" it by renaming it aside and restoring the save's
+        backup. The save then answers 404 (JupyterLab's "File Save Error ... No such file or
+        directory") and what it wrote is lost. Polling the contents API during the save is how
+        this test once lost a student's save (tests/hub/contents_race.py measures
+        the race). A dialog in the page (a failed save) fails at once, with its text.
+        """
+        path = Path(pwd.getpwnam(self.name).pw_dir) / assignment / f"{assignment}.ipynb"
+        want = code.strip()
+        deadline = time.monotonic() + timeout
+        while True:
+            try:
+                cells = json.loads(path.read_text(encoding="utf-8"))["cells"]
+                if any(c["cell_type"] == "code" and "".join(c["source"]).strip() == want for c in cells):
+                    return
+            except (OSError, ValueError, KeyError):   # not there yet, or being written
+                pass
+            if self.page.locator(".jp-Dialog").count():
+                raise AssertionError(f"{self.name}: saving {path.name}: {self.dialogs()}")
+            if time.monotonic() > deadline:
+                raise AssertionError(f"{self.name}: {path} does not hold the typed code {timeout:.0f} s after Ctrl+S")
+            time.sleep(0.25)
 
     def submit(self, assignment: str) -> None:
         panel = self.open_assignments()
