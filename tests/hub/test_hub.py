@@ -66,6 +66,15 @@ def browser():
         yield b
 
 
+def _report(e: BaseException, tab: hb.HubTab, hub: hs.Hub, shot: str, account: str = "") -> None:
+    """A screenshot of ``tab``, and a note on ``e``: the page's open dialogs and the hub log's last
+    lines (those of ``account``, when one is named)."""
+    tab.shot(shot)
+    e.add_note(f"{tab.name}'s open dialogs: {tab.dialogs() or '(none)'}\n"
+               f"hub log (kept in build/hub-test.log){', ' + account + ' only' if account else ''}:\n"
+               f"{hub.log_tail(80, account)}")
+
+
 @pytest.fixture(scope="module")
 def graded(hub, browser):
     """The whole round trip, the instructor in formgrader's pages; returns {student: {problem:
@@ -79,9 +88,7 @@ def graded(hub, browser):
             teacher.assignment(a, "assign")                  # Generate
             teacher.assignment(a, "release")
     except Exception as e:
-        teacher.shot("failed-instructor")
-        e.add_note(f"formgrader's open dialogs: {teacher.dialogs() or '(none)'}\n"
-                   f"hub log (kept in build/hub-test.log):\n{hub.log_tail(60)}")
+        _report(e, teacher, hub, "failed-instructor")
         raise
     instructor = hs.HubUser(hub, hs.INSTRUCTOR)              # reads the scores formgrader shows
     for name, in_page in in_pages.items():
@@ -94,9 +101,7 @@ def graded(hub, browser):
                 in_page.checks[a] = in_page.write_and_check(a, code, f"judged {a}.ipynb")
                 in_page.submit(a)
         except Exception as e:
-            in_page.shot("failed")
-            e.add_note(f"{name}'s open dialogs: {in_page.dialogs() or '(none)'}\n"
-                       f"hub log (kept in build/hub-test.log), {name}'s server:\n{hub.log_tail(80, name)}")
+            _report(e, in_page, hub, "failed", name)
             raise
     students = {u: hs.HubUser(hub, u) for u in API_STUDENTS}
     for name, st in students.items():
@@ -120,9 +125,7 @@ def graded(hub, browser):
             teacher.assignment(a, "generate-feedback")
             teacher.assignment(a, "release-feedback")
         except Exception as e:
-            teacher.shot("failed-instructor")
-            e.add_note(f"formgrader's open dialogs: {teacher.dialogs() or '(none)'}\n"
-                       f"hub log (kept in build/hub-test.log):\n{hub.log_tail(60)}")
+            _report(e, teacher, hub, "failed-instructor")
             raise
         for row in instructor.call("GET", f"/formgrader/api/submissions/{a}").json():
             scores.setdefault(row["student"], {})[a] = row["score"]
