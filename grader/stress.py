@@ -2,13 +2,22 @@
 
 The tool competitive programmers use to find their bug. Inputs come smallest first: the problem's
 ``exhaustive`` group (every configuration of a few lattice points, :mod:`grader.smallcases`, and
-the group's hand-made cases), then
-random small inputs that grow with time. Each input is checked by the problem's input validators,
-answered by the reference (the generator's ``solve``), and FILE's answer is judged in the sandbox
-by the problem's checker, many inputs per sandboxed run. At the first failure the input is shrunk
-(points, holes or operations dropped one at a time while it still fails) and the smallest failing
-input is printed with its verdict; the exit status is 1. When nothing fails in the time given the
-exit status is 0.
+the group's hand-made cases), then random small inputs that grow with time. Each input is checked
+by the problem's input validators, answered by the reference (the generator's ``solve``), and
+FILE's answer is judged in the sandbox by the problem's checker, 48 inputs per sandboxed run.
+
+A failure seen in such a batch is judged again *alone* (a fresh sandbox, the problem's per-test
+limits, a fresh idle budget) before it counts: a batch shares one idle budget and, in function
+mode, one worker process, so a sleeper, state left by earlier calls or a loaded machine can fail
+an input in a batch that passes alone. Such a *fluke* is counted and never reported. An input that
+is over the time limit alone is slow, not wrong: never a counterexample (``judge`` reports TLE);
+it is counted too. A confirmed failure is shrunk (runs of points, holes or operations dropped,
+each smaller input accepted only when it fails alone) and printed with its verdict, the
+checker's message and the end of the program's stderr; the exit status is 1. No sandboxed run
+starts after the deadline (``--seconds``; checked before each input of a batch, so the search
+ends within ``--seconds`` plus one test's limits): when it passes while shrinking, the smallest
+confirmed input so far is printed (exit 1, with a note). When nothing fails in the time given the
+exit status is 0. Notes below the report count the flukes and slow inputs.
 
 Example (the zoo solution that orders collinear points by x alone):
 
@@ -17,6 +26,7 @@ Example (the zoo solution that orders collinear points by x alone):
 from __future__ import annotations
 
 import contextlib
+import copy
 import io
 import random
 import runpy
@@ -166,8 +176,9 @@ class _Runner:
     failure by judging its input again alone; nothing starts after the deadline."""
 
     def __init__(self, problem: Problem, path: Path, deadline: float, stats: Stats):
-        self.problem = problem
+        problem = copy.copy(problem)               # the caller's problem keeps its tests
         problem.__dict__["_tests"] = []            # no hidden tests: ours are set per batch
+        self.problem = problem
         self.judge = Judge(problem, hide=[str(path.resolve().parent)], stop_at_first_failure=True,
                            stderr_lines=STDERR_LINES)
         self.sub = Submission.from_path(path, follow_links=True)
@@ -186,7 +197,10 @@ class _Runner:
         if time.monotonic() >= self.deadline:
             self.stats.unconfirmed += 1
             return None
-        r = self._judge([test])[0]
+        return self._counted(self._judge([test])[0])
+
+    def _counted(self, r: TestResult) -> TestResult | None:
+        """``r`` (a result judged alone) when it is a failure to report; else None, counted."""
         if r.verdict == Verdict.SKIPPED:
             self.stats.unconfirmed += 1
         elif r.verdict in (Verdict.AC, Verdict.JE):
@@ -215,7 +229,8 @@ class _Runner:
             if bad is None:
                 return None
             case, test = tests[bad]
-            alone = self._alone(test)
+            # the first test of a run was judged alone already (a fresh sandbox, worker and budget)
+            alone = self._counted(results[0]) if bad == 0 else self._alone(test)
             if alone is not None:
                 return case, test, alone
             tests = tests[bad + 1:]

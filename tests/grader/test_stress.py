@@ -163,5 +163,6 @@ def test_the_deadline_holds_while_shrinking_and_the_smallest_confirmed_input_is_
     assert elapsed < seconds + wall_limit_for(problem.time_limit) + STARTUP_SLACK, (elapsed, out)
     assert code == 1, out
     assert "the time ran out while shrinking" in out, out
+    assert len(problem.tests()) == 1   # stress judged its own inputs on a copy: the problem keeps its test
     printed = out.split(":\n\n", 1)[1].split("\n\n", 1)[0].splitlines()
     assert all(f"{x:.1f} {y:.1f}" in printed for x, y in special) and int(printed[0]) <= len(pts), out
