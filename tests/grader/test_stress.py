@@ -23,8 +23,11 @@ import yaml
 
 from grader import smallcases
 from grader import stress as stress_mod
+from grader.judge import Judge
 from grader.problems import Problem
 from grader.runner import wall_limit_for
+from grader.submissions import Submission
+from grader.verdicts import TestResult, Verdict
 
 from .conftest import FIXTURE_PROBLEM, REPO
 
@@ -166,3 +169,20 @@ def test_the_deadline_holds_while_shrinking_and_the_smallest_confirmed_input_is_
     assert len(problem.tests()) == 1   # stress judged its own inputs on a copy: the problem keeps its test
     printed = out.split(":\n\n", 1)[1].split("\n\n", 1)[0].splitlines()
     assert all(f"{x:.1f} {y:.1f}" in printed for x, y in special) and int(printed[0]) <= len(pts), out
+
+
+def test_a_judge_starts_no_test_after_its_deadline(tmp_path):
+    """The hook stress cuts its batches with: tests not started by the deadline are skipped."""
+    problem = tiny_problem(tmp_path, exhaustive=[{"kind": "points", "points": [[0, 0], [1, 0], [0, 1]],
+                                                  "shuffle": False}])
+    judge = Judge(problem)
+    result = judge.judge(Submission.from_path(function_solution(tmp_path, "")), deadline=time.monotonic())
+    assert [str(t.verdict) for t in result.tests] == ["--"], result.tests
+    assert "time given ran out" in result.tests[0].message
+
+
+def test_the_json_of_a_result_has_stderr_only_when_it_was_kept():
+    plain = TestResult("t/1", "t", Verdict.RE, message="boom")
+    assert "stderr" not in plain.to_json()          # judge --json and the results store as before
+    kept = TestResult("t/1", "t", Verdict.RE, message="boom", stderr="Traceback ...")
+    assert kept.to_json()["stderr"] == "Traceback ..." and TestResult.from_json(kept.to_json()) == kept
