@@ -23,10 +23,10 @@ from typing import Callable, Sequence
 from . import hidden_feedback
 from .check_budget import CheckTimeout, check_seconds, cpu_budget
 from .problems import Problem, TestCase, load_problem
-from .runner import FunctionWorker, RunOutcome, idle_budget_for, run_stdio
+from .runner import FunctionWorker, RunOutcome, idle_budget_for, output_paths, run_stdio
 from .jail import Limits, Sandbox
 from .submissions import Submission, SubmissionError
-from .text import clean
+from .text import clean, last_lines
 from .verdicts import JudgeResult, TestResult, Verdict
 
 PREVIEW_MAX_LINES = 24
@@ -89,6 +89,19 @@ def _printed_since(path: str, offset: int) -> tuple[str, int]:
     return text, size
 
 
+def _stderr_since(path: str, offset: int, lines: int) -> str:
+    """The last ``lines`` lines the submission wrote to its stderr file after ``offset``, made safe."""
+    size = _file_size(path)
+    if size < offset:  # the worker was restarted: its stderr file starts over
+        offset = 0
+    if size == offset:
+        return ""
+    with open(path, "rb") as f:
+        f.seek(max(offset, size - 16384))
+        data = f.read()
+    return last_lines(data, lines)
+
+
 def _verdict_for(outcome: RunOutcome) -> tuple[Verdict, str]:
     where = ("\n  " + "\n  ".join(outcome.where)) if outcome.where else ""
     status = outcome.status
@@ -115,9 +128,12 @@ class Judge:
     """Judges submissions for one problem; reusable (keeps the parsed tests)."""
 
     def __init__(self, problem: Problem | str, hide: Sequence[str | os.PathLike] = (), stop_at_first_failure: bool = False,
-                 trusted: bool | None = None):
+                 trusted: bool | None = None, stderr_lines: int = 0):
         """``trusted``: where no kernel jail can be built, judge without one instead of raising
-        :class:`grader.jail.JailUnavailable` (a student's own code; default ``$GRADER_TRUSTED``)."""
+        :class:`grader.jail.JailUnavailable` (a student's own code; default ``$GRADER_TRUSTED``).
+        ``stderr_lines``: a failing test keeps the last that many lines of the submission's stderr
+        in ``TestResult.stderr`` (0: none)."""
+        self.stderr_lines = stderr_lines
         self.problem = load_problem(problem) if isinstance(problem, str) else problem
         self.trusted = trusted
         self.stop_at_first_failure = stop_at_first_failure
@@ -159,9 +175,10 @@ class Judge:
 
     def judge(self, sub: Submission, name: str = "submission.py",
               on_test: Callable[[TestResult], None] | None = None,
-              prior: dict[str, TestResult] | None = None) -> JudgeResult:
+              prior: dict[str, TestResult] | None = None, deadline: float | None = None) -> JudgeResult:
         """Judge ``sub``; ``on_test`` is called after each newly run test; tests in ``prior`` (results
-        already stored by an interrupted batch) are reused, not run again."""
+        already stored by an interrupted batch) are reused, not run again. No test starts after
+        ``deadline`` (a ``time.monotonic()`` value): the rest are skipped."""
         prior = prior or {}
         t0 = time.monotonic()
         syntax = sub.syntax_error()
@@ -192,6 +209,8 @@ class Judge:
                         r = TestResult(test.name, test.group, load_failure[0], 0.0, 0.0, load_failure[1])
                     elif test.group in failed_groups or (failed_groups and self.stop_at_first_failure):
                         r = TestResult(test.name, test.group, Verdict.SKIPPED, message="an earlier test of this group failed")
+                    elif deadline is not None and time.monotonic() >= deadline:
+                        r = TestResult(test.name, test.group, Verdict.SKIPPED, message="not run: the time given ran out")
                     else:
                         r, idle = self._run_one(box, worker, sub, k, idle_left)
                         idle_left -= idle
@@ -243,11 +262,13 @@ class Judge:
         """One test's result and the wall time the submission spent not computing in it."""
         test = self.tests[k]
         idle = 0.0
-        before = 0
+        before = err_before = 0
+        err_path = worker.out_paths[1] if worker is not None else output_paths(box)[1]
         try:
             args, expected = self._test_data(k)
             if worker is not None:
                 before = _file_size(worker.out_paths[0])
+                err_before = _file_size(err_path)
                 outcome = worker.call(args, self.problem.time_limit, idle_left=idle_left)
             else:
                 outcome = run_stdio(box, sub.source, test.input_text, self.problem.time_limit,
@@ -270,6 +291,8 @@ class Judge:
                 printed, _ = _printed_since(worker.out_paths[0], before)
                 if printed.strip():
                     r.message += f"\n--- your print() output in this test ---\n{printed}"
+            if self.stderr_lines and r.verdict != Verdict.JE:
+                r.stderr = _stderr_since(err_path, err_before, self.stderr_lines)
         r.message = clean(r.message, 4000, newlines=True)  # checker messages quote student data
         r.hidden_message = clean(r.hidden_message, 300)
         return r, idle

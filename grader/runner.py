@@ -384,6 +384,11 @@ def _output_overflow(box: Sandbox, paths: Sequence[str]) -> bool:
     return any(os.path.exists(p) and os.path.getsize(p) >= limit for p in paths)
 
 
+def output_paths(box: Sandbox) -> list[str]:
+    """The files a run's stdout and stderr go to, in the sandbox's private directory."""
+    return [os.path.join(box.private_dir, n) for n in ("stdout.txt", "stderr.txt")]
+
+
 def _error_outcome(err: object, time_s: float = 0.0, memory_mb: float = 0.0) -> RunOutcome:
     """An error report from the child (any JSON: it may be forged) as a sanitised outcome."""
     err = err if isinstance(err, dict) else {}
@@ -405,7 +410,7 @@ class FunctionWorker:
         self.load_timeout = load_timeout
         self.total_cpu_s = total_cpu_s
         self.child: _Child | None = None
-        self.out_paths = [os.path.join(box.private_dir, n) for n in ("stdout.txt", "stderr.txt")]
+        self.out_paths = output_paths(box)
         self.load_failure: RunOutcome | None = None
         self._next_id = 0
         self.starts = 0
@@ -562,7 +567,7 @@ def run_stdio(box: Sandbox, source: str, input_text: str, time_limit: float, for
                                              "sleeping or blocked)", time_s=time_limit)
     config = _child_config(box, "stdio", "", forbidden, filename)
     in_path = os.path.join(box.private_dir, "input.txt")
-    out_path, err_path = (os.path.join(box.private_dir, n) for n in ("stdout.txt", "stderr.txt"))
+    out_path, err_path = output_paths(box)
     with open(in_path, "w") as f:
         f.write(input_text)
     fin = os.open(in_path, os.O_RDONLY)

@@ -2,13 +2,22 @@
 
 The tool competitive programmers use to find their bug. Inputs come smallest first: the problem's
 ``exhaustive`` group (every configuration of a few lattice points, :mod:`grader.smallcases`, and
-the group's hand-made cases), then
-random small inputs that grow with time. Each input is checked by the problem's input validators,
-answered by the reference (the generator's ``solve``), and FILE's answer is judged in the sandbox
-by the problem's checker, many inputs per sandboxed run. At the first failure the input is shrunk
-(points, holes or operations dropped one at a time while it still fails) and the smallest failing
-input is printed with its verdict; the exit status is 1. When nothing fails in the time given the
-exit status is 0.
+the group's hand-made cases), then random small inputs that grow with time. Each input is checked
+by the problem's input validators, answered by the reference (the generator's ``solve``), and
+FILE's answer is judged in the sandbox by the problem's checker, 48 inputs per sandboxed run.
+
+A failure seen in such a batch is judged again *alone* (a fresh sandbox, the problem's per-test
+limits, a fresh idle budget) before it counts: a batch shares one idle budget and, in function
+mode, one worker process, so a sleeper, state left by earlier calls or a loaded machine can fail
+an input in a batch that passes alone. Such a *fluke* is counted and never reported. An input that
+is over the time limit alone is slow, not wrong: never a counterexample (``judge`` reports TLE);
+it is counted too. A confirmed failure is shrunk (runs of points, holes or operations dropped,
+each smaller input accepted only when it fails alone) and printed with its verdict, the
+checker's message and the end of the program's stderr; the exit status is 1. No sandboxed run
+starts after the deadline (``--seconds``; checked before each input of a batch, so the search
+ends within ``--seconds`` plus one test's limits): when it passes while shrinking, the smallest
+confirmed input so far is printed (exit 1, with a note). When nothing fails in the time given the
+exit status is 0. Notes below the report count the flukes and slow inputs.
 
 Example (the zoo solution that orders collinear points by x alone):
 
@@ -17,6 +26,7 @@ Example (the zoo solution that orders collinear points by x alone):
 from __future__ import annotations
 
 import contextlib
+import copy
 import io
 import random
 import runpy
@@ -30,20 +40,40 @@ from . import smallcases
 from .judge import Judge
 from .problems import Problem, TestCase, load_problem
 from .submissions import Submission
-from .verdicts import Verdict
+from .verdicts import TestResult, Verdict
 
 BATCH = 48  # inputs per sandboxed run
+STDERR_LINES = 12  # a failure shows this many last lines of the submission's stderr
+_PASSING = (Verdict.AC, Verdict.SKIPPED, Verdict.JE)
 
 
 @dataclass
 class Failure:
-    """The smallest failing input found: its generator case, input text, verdict and message."""
+    """The smallest failing input found (it fails when judged alone): its generator case, input
+    text, verdict and message, the end of the submission's stderr in it, and the search's counts.
+    ``shrunk`` is False when the time ran out while shrinking (a smaller one may exist)."""
 
     case: dict
     input_text: str
     verdict: str
     message: str
     tried: int
+    stderr: str = ""
+    shrunk: bool = True
+    flukes: int = 0
+    slow: int = 0
+
+
+@dataclass
+class Stats:
+    """Counts of one search: inputs judged in batches; failures that did not happen again alone
+    (``flukes``); inputs over the time limit alone (``slow``: never reported); failures seen when
+    no time was left to judge them alone (``unconfirmed``: not reported)."""
+
+    tried: int = 0
+    flukes: int = 0
+    slow: int = 0
+    unconfirmed: int = 0
 
 
 def _valid(problem: Problem, text: str) -> bool:
@@ -142,80 +172,156 @@ def candidates(case: dict) -> Iterator[dict]:
 
 
 class _Runner:
-    """Judges lists of cases with the submission, many per sandboxed run, stopping at the first
-    failure."""
+    """Judges lists of cases with the submission, many per sandboxed run, and confirms each
+    failure by judging its input again alone; nothing starts after the deadline."""
 
-    def __init__(self, problem: Problem, path: Path):
-        self.problem = problem
+    def __init__(self, problem: Problem, path: Path, deadline: float, stats: Stats):
+        problem = copy.copy(problem)               # the caller's problem keeps its tests
         problem.__dict__["_tests"] = []            # no hidden tests: ours are set per batch
-        self.judge = Judge(problem, hide=[str(path.resolve().parent)], stop_at_first_failure=True)
+        self.problem = problem
+        self.judge = Judge(problem, hide=[str(path.resolve().parent)], stop_at_first_failure=True,
+                           stderr_lines=STDERR_LINES)
         self.sub = Submission.from_path(path, follow_links=True)
-        self.tried = 0
+        self.deadline = deadline
+        self.stats = stats
 
-    def first_failure(self, cases: list[dict]) -> tuple[dict, TestCase, str, str] | None:
-        tests, kept = [], []
-        for case in cases:
-            t = _test(self.problem, case, f"stress/{self.tried + len(tests) + 1}")
-            if t is not None:
-                tests.append(t)
-                kept.append(case)
-        if not tests:
-            return None
+    def _judge(self, tests: list[TestCase]) -> list[TestResult]:
+        """Judge ``tests`` in one sandboxed run (one idle budget; none starts after the deadline)."""
         j = self.judge
         j.tests, j._args, j._answers = tests, [None] * len(tests), [None] * len(tests)
-        result = j.judge(self.sub, str(self.sub.filename))
-        for case, t, r in zip(kept, tests, result.tests):
-            if r.verdict not in (Verdict.AC, Verdict.SKIPPED, Verdict.JE):
-                self.tried += tests.index(t) + 1
-                return case, t, str(r.verdict), r.message
-        self.tried += len(tests)
+        return j.judge(self.sub, str(self.sub.filename), deadline=self.deadline).tests
+
+    def _alone(self, test: TestCase) -> TestResult | None:
+        """``test`` judged on its own, with the problem's per-test limits and a fresh sandbox and
+        idle budget: its result when it fails there too (not by time alone), else None, counted."""
+        if time.monotonic() >= self.deadline:
+            self.stats.unconfirmed += 1
+            return None
+        return self._counted(self._judge([test])[0])
+
+    def _counted(self, r: TestResult) -> TestResult | None:
+        """``r`` (a result judged alone) when it is a failure to report; else None, counted."""
+        if r.verdict == Verdict.SKIPPED:
+            self.stats.unconfirmed += 1
+        elif r.verdict in (Verdict.AC, Verdict.JE):
+            self.stats.flukes += 1
+        elif r.verdict == Verdict.TLE:
+            self.stats.slow += 1       # slow, not wrong: never a counterexample
+        else:
+            return r
+        return None
+
+    def first_failure(self, cases: list[dict]) -> tuple[dict, TestCase, TestResult] | None:
+        """The first of ``cases`` (in order) that fails when judged alone, or None when none does
+        before the deadline. A failure seen in a batch that does not happen again alone is a fluke
+        (batching: one idle budget, one worker process, a loaded machine): the batch goes on after it."""
+        tests: list[tuple[dict, TestCase]] = []
+        for case in cases:
+            if time.monotonic() >= self.deadline:
+                break
+            t = _test(self.problem, case, f"stress/{self.stats.tried + len(tests) + 1}")
+            if t is not None:
+                tests.append((case, t))
+        while tests and time.monotonic() < self.deadline:
+            results = self._judge([t for _, t in tests])
+            bad = next((k for k, r in enumerate(results) if r.verdict not in _PASSING), None)
+            self.stats.tried += sum(r.verdict != Verdict.SKIPPED for r in results[:None if bad is None else bad + 1])
+            if bad is None:
+                return None
+            case, test = tests[bad]
+            # the first test of a run was judged alone already (a fresh sandbox, worker and budget)
+            alone = self._counted(results[0]) if bad == 0 else self._alone(test)
+            if alone is not None:
+                return case, test, alone
+            tests = tests[bad + 1:]
         return None
 
 
-def stress(problem_id: str, path: str | Path, seconds: float = 10.0, seed: int = 1,
-           log: Callable[[str], None] = lambda s: None) -> Failure | None:
-    """Search for a failing input of ``path`` on ``problem_id`` for about ``seconds``; the
-    smallest failure found (shrunk), or None."""
-    problem = load_problem(problem_id)
+def stress(problem_id: str | Problem, path: str | Path, seconds: float = 10.0, seed: int = 1,
+           log: Callable[[str], None] = lambda s: None, stats: Stats | None = None) -> Failure | None:
+    """Search for a failing input of ``path`` on ``problem_id`` (an id or a loaded problem) for
+    ``seconds``; the smallest failure found that fails alone too (shrunk as far as the time
+    allows), or None. Ends within ``seconds`` plus one test's limits. ``stats`` (if given) receives
+    the counts of the search: inputs judged, flukes, inputs only slow, failures left unconfirmed."""
+    problem = load_problem(problem_id) if isinstance(problem_id, str) else problem_id
     if problem.generator_path is None or not problem.generator_path.is_file():
-        raise ValueError(f"problem {problem_id!r}: stress needs the problem's generator (the reference answers)")
+        raise ValueError(f"problem {problem.id!r}: stress needs the problem's generator (the reference answers)")
     path = Path(path)
     if not path.is_file():
         raise ValueError(f"submission file {path} does not exist")
-    runner = _Runner(problem, path)
+    stats = stats if stats is not None else Stats()
     deadline = time.monotonic() + seconds
+    runner = _Runner(problem, path, deadline, stats)
     rng = random.Random(seed)
-    group = [g.cases for g in problem.groups if g.name == "exhaustive"]  # with its hand-made cases
-    pending = list(group[0] if group else smallcases.cases_for(problem_id))
+    pending = _first_cases(problem)
     found = None
     size = 2
     while found is None and time.monotonic() < deadline:
         if not pending:  # the lattice is done: random inputs, growing
-            pending = [random_case(problem_id, rng, size) for _ in range(BATCH)]
+            pending = [random_case(problem.id, rng, size) for _ in range(BATCH)]
             size = min(size + 1, 40)
         batch, pending = pending[:BATCH], pending[BATCH:]
         found = runner.first_failure(batch)
     if found is None:
         return None
-    case, test, verdict, message = found
-    log(f"failure after {runner.tried} inputs; shrinking")
+    case, test, result = found
+    log(f"failure after {stats.tried} inputs (confirmed alone); shrinking")
+    shrunk = True
     while True:
         smaller = runner.first_failure(list(candidates(case)))
         if smaller is None:
+            shrunk = time.monotonic() < deadline   # else the deadline cut the last round
             break
-        case, test, verdict, message = smaller
-    return Failure(case, test.input_text, verdict, message, runner.tried)
+        case, test, result = smaller
+    return Failure(case, test.input_text, str(result.verdict), result.message, stats.tried, stderr=result.stderr,
+                   shrunk=shrunk, flukes=stats.flukes, slow=stats.slow)
 
 
-def main(problem_id: str, file: str, seconds: float) -> int:
+def _first_cases(problem: Problem) -> list[dict]:
+    """The first inputs to try: the problem's ``exhaustive`` group (with its hand-made cases), else
+    :func:`grader.smallcases.cases_for` the problem, else none (random inputs at once)."""
+    group = [g.cases for g in problem.groups if g.name == "exhaustive"]
+    if group:
+        return list(group[0])
+    try:
+        return smallcases.cases_for(problem.id)
+    except ValueError:  # a problem smallcases does not know (a course's own, a test fixture)
+        return []
+
+
+def notes(stats: Stats, failure: Failure | None) -> list[str]:
+    """What the search saw but did not report, one line each (flukes, slow inputs, a cut shrink)."""
+    out = []
+    if failure is not None and not failure.shrunk:
+        out.append("note: the time ran out while shrinking: a smaller failing input may exist (more --seconds)")
+    if stats.flukes:
+        out.append(f"note: {stats.flukes} failure(s) seen in a batch of inputs did not happen again when the input "
+                   "was judged alone (not reported)")
+    if stats.slow:
+        out.append(f"note: {stats.slow} input(s) went over the time limit when judged alone: slow, not wrong, so "
+                   "not a counterexample (python -m grader judge reports TLE)")
+    if stats.unconfirmed:
+        out.append(f"note: {stats.unconfirmed} failure(s) seen at the end of the time could not be judged alone "
+                   "(not reported; more --seconds)")
+    return out
+
+
+def main(problem_id: str | Problem, file: str, seconds: float) -> int:
     """The ``stress`` command: print the smallest failing input (exit 1) or that none was found."""
     t0 = time.monotonic()
-    failure = stress(problem_id, file, seconds, log=lambda s: print(s, file=sys.stderr))
+    stats = Stats()
+    failure = stress(problem_id, file, seconds, log=lambda s: print(s, file=sys.stderr), stats=stats)
     if failure is None:
-        print(f"no failing input found in {time.monotonic() - t0:.1f} s")
+        print(f"no failing input found in {time.monotonic() - t0:.1f} s ({stats.tried} inputs judged)")
+        for line in notes(stats, None):
+            print(line)
         return 0
     print(f"{failure.verdict} on this input (found and shrunk in {time.monotonic() - t0:.1f} s, "
           f"{failure.tried} inputs judged):\n")
     print(failure.input_text.rstrip("\n"))
     print(f"\n{failure.verdict}: {failure.message}")
+    if failure.stderr:
+        print(f"--- its stderr (last lines) ---\n{failure.stderr}")
+    for line in notes(stats, failure):
+        print(line)
     return 1

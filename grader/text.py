@@ -65,6 +65,31 @@ def clean(value: object, limit: int = MAX_TEXT, newlines: bool = False) -> str:
     return "".join(out)
 
 
+def last_lines(value: object, lines: int = 10, limit: int = 1500) -> str:
+    """The end of ``value`` (a program's stderr, say) as safe display text: its last ``lines``
+    lines, each through :func:`clean` (newlines kept between them), about ``limit`` characters in
+    all (lines dropped from the front, a longer line keeps its end); ``...`` marks a cut.
+
+    >>> last_lines("one\\ntwo\\nthree\\x1b[0m\\n", lines=2)
+    '...\\ntwo\\nthree\\\\x1b[0m'
+    >>> last_lines("x" * 50, limit=10)
+    '...xxxxxxx'
+    """
+    if isinstance(value, bytes):
+        value = value.decode("utf-8", errors="replace")
+    text = (value if isinstance(value, str) else str(value))[-4 * limit:].rstrip("\n")
+    all_lines = text.splitlines()
+    kept = []
+    for line in all_lines[-lines:]:
+        safe = clean(line[-limit:], 4 * limit)
+        kept.append("..." + safe[-(limit - 3):] if len(line) > limit or len(safe) > limit else safe)
+    cut = len(all_lines) > len(kept)
+    while len(kept) > 1 and sum(len(k) + 1 for k in kept) > limit + 1:
+        kept.pop(0)
+        cut = True
+    return ("...\n" if cut else "") + "\n".join(kept)
+
+
 def csv_cell(value: object) -> str:
     """A CSV cell a spreadsheet shows as text: a leading ``= + - @`` (a formula) gets a ``'``.
 

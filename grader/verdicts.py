@@ -45,7 +45,9 @@ DESCRIPTIONS = {
 class TestResult:
     """One test's outcome. ``input_preview`` is the failing input for small tests (for students).
     ``message`` is the detail (instructor, reports, public tests); ``hidden_message`` what a student
-    may see when the test is hidden (:mod:`grader.hidden_feedback`; empty: the verdict's description)."""
+    may see when the test is hidden (:mod:`grader.hidden_feedback`; empty: the verdict's description).
+    ``stderr``: the end of what the submission wrote to stderr in a failing test, kept only by a
+    judge that asks for it (``Judge(stderr_lines=...)``, as ``stress`` does); in JSON only when set."""
 
     __test__ = False  # not a pytest test class
 
@@ -58,16 +60,20 @@ class TestResult:
     input_preview: str = ""
     hidden_message: str = ""
     received: Any = field(default=None, repr=False, compare=False)  #: a wrong answer, for reports only
+    stderr: str = field(default="", repr=False)
 
     def to_json(self) -> dict:
         d = asdict(self)
         d.pop("received")
+        if not self.stderr:
+            d.pop("stderr")
         d["verdict"] = str(self.verdict)
         return d
 
     @classmethod
     def from_json(cls, d: dict) -> "TestResult":
-        keys = {"name", "group", "verdict", "time_s", "memory_mb", "message", "input_preview", "hidden_message"}
+        keys = {"name", "group", "verdict", "time_s", "memory_mb", "message", "input_preview", "hidden_message",
+                "stderr"}
         return cls(**{k: v for k, v in d.items() if k in keys and k != "verdict"}, verdict=Verdict(d["verdict"]))
 
 
