@@ -17,8 +17,9 @@ What this file changes (``CourseContentsManager``, a subclass of the default
 * A save writes the new version to a temporary file on the notebook's file system (in the
   server root's hidden ``.ipynb_checkpoints/``, outside every assignment folder: nbgrader's
   Submit lists an assignment's files, then copies them, and fails on one that vanished in
-  between, as jupyter_server's ``.~<name>`` backups do), flushes and fsyncs it, gives it the old file's permission bits (and owner, when the server may),
-  and ``os.replace``-s it over the notebook. Any reader, in the server or outside it, opens either
+  between, as jupyter_server's ``.~<name>`` backups do), flushes and fsyncs it, gives it the old
+  file's permission bits (and owner, when the server may), and ``os.replace``-s it over the
+  notebook. Any reader, in the server or outside it, opens either
   the previous version or the new one, always whole. A save that fails or dies midway leaves the
   previous version untouched (a failed save removes its temporary file; a killed server leaves it
   aside, hidden: ``<root>/.ipynb_checkpoints/.~<name>.<random>.tmp``).
@@ -31,6 +32,10 @@ What this file changes (``CourseContentsManager``, a subclass of the default
 
 In a folder the server may not write (but the file is writable), a save writes in place, as
 jupyter_server does: there is no room for a temporary file.
+
+The file defines its classes itself and imports nothing of the course: the same file works in the
+hub's venv, in the checkout's and with any jupyter_server 2.x, and no move of the course's
+modules can break a deployed configuration.
 """
 from __future__ import annotations
 
