@@ -186,12 +186,14 @@ def test_saves_through_the_hub_replace_the_notebook_and_lose_nothing(graded, hub
     nb = cr.big_notebook(cells=4, lines=3000)
     st.call("PUT", f"/api/contents/{path.name}", json={"type": "notebook", "format": "json", "content": nb})
     os.chmod(path, 0o640)
-    before = path.stat()
-    with requests.Session() as reader:
-        reader.cookies.update(st.s.cookies)
-        seen = cr.race(lambda body: st.s.put(url, json=body, headers=headers, timeout=120),
-                       lambda: reader.get(url + "?content=1", headers=headers, timeout=120),
-                       path, nb, saves=40, readers=1)
+    with open(path, "rb") as old:          # held open, its inode cannot be reused by a later save
+        before = os.fstat(old.fileno())
+        with requests.Session() as reader:
+            reader.cookies.update(st.s.cookies)
+            seen = cr.race(lambda body: st.s.put(url, json=body, headers=headers, timeout=120),
+                           lambda: reader.get(url + "?content=1", headers=headers, timeout=120),
+                           path, nb, saves=40, readers=1)
+        assert cr.marker(old.read().decode()) == 0, "a reader of the old file reads it whole"
     assert not seen.lost and seen.torn_disk_reads == 0, seen.summary()
     assert seen.answers["read answered 200"] > 0, seen.summary()
     after = path.stat()
