@@ -46,6 +46,10 @@ test: warm chromium bubblewrap
 # LAB_ARGS passes extra options, e.g. make lab LAB_ARGS="--no-browser --port=8899".
 LAB_ROOT := $(if $(filter 0,$(shell id -u)),--allow-root,)
 LAB_ARGS ?=
+# The hub's server configuration (deploy/jupyterhub/jupyter_server_config.py) for the local
+# JupyterLab too: saves replace the notebook whole, so a second tab, a read while saving or a
+# stopped server never loses a save (deploy/jupyterhub/README.md, "Saves").
+SERVER_CONFIG := --config=$(CURDIR)/deploy/jupyterhub/jupyter_server_config.py
 
 # $(call apt_need,COMMAND,PACKAGE,WHAT HAPPENS WITHOUT IT): install PACKAGE with apt-get when
 # COMMAND is missing and we are root, else say what its absence costs.
@@ -63,13 +67,13 @@ bubblewrap:
 	@$(call apt_need,bwrap,bubblewrap,root grades in the fallback jail and an ordinary account refuses to grade)
 
 lab: warm $(LAB_OVERRIDES)
-	$(VENV)/bin/jupyter lab $(LAB_ROOT) $(LAB_ARGS) notebooks
+	$(VENV)/bin/jupyter lab $(SERVER_CONFIG) $(LAB_ROOT) $(LAB_ARGS) notebooks
 
 # The instructor's JupyterLab: started in the course folder (assignments/), where formgrader finds
 # nbgrader_config.py and the gradebook (started anywhere else it shows "No data available"), with
 # the venv's bin/ on PATH (nbgrader calls alembic).
 instructor: warm $(LAB_OVERRIDES)
-	cd assignments && PATH="$(abspath $(VENV))/bin:$$PATH" "$(abspath $(VENV))/bin/jupyter" lab $(LAB_ROOT) $(LAB_ARGS)
+	cd assignments && PATH="$(abspath $(VENV))/bin:$$PATH" "$(abspath $(VENV))/bin/jupyter" lab $(SERVER_CONFIG) $(LAB_ROOT) $(LAB_ARGS)
 
 bench: warm
 	$(PY) benchmarks/bench_delaunay.py

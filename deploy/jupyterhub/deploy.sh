@@ -38,6 +38,9 @@ venv() {  # the shared venv, rebuilt only when pyproject.toml or the course's so
     # widget state saved with a lesson, as make setup does for the checkout's venv: a lesson
     # reopened without its kernel shows the widgets' last pictures, not "model not found"
     install -D -m 0644 "$REPO/deploy/lab-overrides.json" "$HUB_VENV/share/jupyter/lab/settings/overrides.json"
+    # every account's server reads the venv's etc/jupyter (sys.prefix): saves that replace the
+    # notebook whole, so no concurrent read or stopped server loses a save (jupyter_server_config.py)
+    install -D -m 0644 "$HERE/jupyter_server_config.py" "$HUB_VENV/etc/jupyter/jupyter_server_config.py"
     chown -R root:root "$HUB_VENV"; chmod -R go-w,go+rX "$HUB_VENV"   # read-only for every account
 }
 

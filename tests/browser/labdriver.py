@@ -27,7 +27,7 @@ import sys
 import time
 import urllib.request
 from pathlib import Path
-from typing import Iterator
+from typing import Iterator, Sequence
 
 import pytest
 
@@ -49,8 +49,13 @@ def free_port() -> int:
 
 
 @contextlib.contextmanager
-def serve_lab(root: Path, env: dict | None = None, start_timeout: float = 90.0) -> Iterator[str]:
-    """JupyterLab serving ``root`` (config, runtime and workspaces inside it); yields its base URL."""
+def serve_lab(root: Path, env: dict | None = None, start_timeout: float = 90.0,
+              app: str = "lab", args: Sequence[str] = ()) -> Iterator[str]:
+    """JupyterLab serving ``root`` (config, runtime and workspaces inside it); yields its base URL.
+
+    ``app="server"`` starts a plain ``jupyter server`` instead; ``args`` are added to its command
+    line (e.g. ``--config=deploy/jupyterhub/jupyter_server_config.py``).
+    """
     root = Path(root)
     config = root / "config"
     (config / "labconfig").mkdir(parents=True, exist_ok=True)
@@ -60,11 +65,12 @@ def serve_lab(root: Path, env: dict | None = None, start_timeout: float = 90.0) 
                JUPYTER_RUNTIME_DIR=str(root / "runtime"), MPLBACKEND="Agg")
     port = free_port()
     log = open(root / "server.log", "w")
+    lab_only = ["--LabApp.expose_app_in_browser=True", f"--LabApp.workspaces_dir={root / 'ws'}"]
     proc = subprocess.Popen(
-        [sys.executable, "-m", "jupyter", "lab", "--no-browser", "--allow-root", f"--port={port}",
+        [sys.executable, "-m", "jupyter", app, "--no-browser", "--allow-root", f"--port={port}",
          "--ServerApp.port_retries=0", f"--ServerApp.root_dir={root}", "--IdentityProvider.token=",
          "--ServerApp.password=", "--ServerApp.disable_check_xsrf=True",
-         "--LabApp.expose_app_in_browser=True", f"--LabApp.workspaces_dir={root / 'ws'}"],
+         *(lab_only if app == "lab" else []), *args],
         env=env, stdout=log, stderr=subprocess.STDOUT, start_new_session=True)
     url = f"http://127.0.0.1:{port}"
     try:

@@ -135,13 +135,10 @@ class BrowserStudent(HubTab):
     def wait_saved(self, assignment: str, code: str, timeout: float = 60) -> None:
         """Wait until the notebook file in the student's home holds ``code`` in a code cell.
 
-        The file is read from the disk, never through the server's contents API: jupyter_server
-        2.21 lets a read of a notebook run while a save of it is being written, and a read that
-        finds the half-written file "recovers" it by renaming it aside and restoring the save's
-        backup. The save then answers 404 (JupyterLab's "File Save Error ... No such file or
-        directory") and what it wrote is lost. Polling the contents API during the save is how
-        this test once lost a student's save (tests/hub/contents_race.py measures
-        the race). A dialog in the page (a failed save) fails at once, with its text.
+        The file is read from the disk, where the sample check and Submit read it. (Polling the
+        contents API during saves once lost a student's save here, with jupyter_server 2.21's own
+        save; the course's jupyter_server_config.py fixed that, tests/hub/test_saves.py.) A dialog
+        in the page (a failed save) fails at once, with its text.
         """
         path = Path(pwd.getpwnam(self.name).pw_dir) / assignment / f"{assignment}.ipynb"
         want = code.strip()

@@ -27,8 +27,10 @@ import tempfile
 from pathlib import Path
 
 import pytest
+import requests
 
 sys.path.insert(0, str(Path(__file__).parent))
+import contents_race as cr  # noqa: E402
 import hub_browser as hb  # noqa: E402
 import hub_session as hs  # noqa: E402
 
@@ -167,6 +169,36 @@ def test_the_shared_venv_saves_widget_state(hub):
     overrides = REPO / "build" / "hub-venv" / "share" / "jupyter" / "lab" / "settings" / "overrides.json"
     assert json.loads(overrides.read_text())["@jupyter-widgets/jupyterlab-manager:plugin"]["saveState"] is True
     assert overrides.stat().st_mode & 0o004, "every account's JupyterLab reads it"
+
+
+def test_saves_through_the_hub_replace_the_notebook_and_lose_nothing(graded, hub):
+    """Every account's server reads deploy/jupyterhub/jupyter_server_config.py from the shared venv:
+    a save through the hub replaces the notebook by a new file (a new inode, the old mode and owner;
+    jupyter_server's own save writes in place), and 40 saves while a reader polls the same notebook
+    through the hub lose none (tests/hub/test_saves.py races 200 on a plain server)."""
+    installed = REPO / "build" / "hub-venv" / "etc" / "jupyter" / "jupyter_server_config.py"
+    assert installed.read_text() == (REPO / "deploy" / "jupyterhub" / "jupyter_server_config.py").read_text()
+    name = API_STUDENTS[0]
+    st = graded[1][name]
+    path = Path(pwd.getpwnam(name).pw_dir) / "save-race.ipynb"
+    url = f"{st.base}/api/contents/{path.name}"
+    headers = {"X-XSRFToken": st.xsrf}
+    nb = cr.big_notebook(cells=4, lines=3000)
+    st.call("PUT", f"/api/contents/{path.name}", json={"type": "notebook", "format": "json", "content": nb})
+    os.chmod(path, 0o640)
+    with open(path, "rb") as old:          # held open, its inode cannot be reused by a later save
+        before = os.fstat(old.fileno())
+        with requests.Session() as reader:
+            reader.cookies.update(st.s.cookies)
+            seen = cr.race(lambda body: st.s.put(url, json=body, headers=headers, timeout=120),
+                           lambda: reader.get(url + "?content=1", headers=headers, timeout=120),
+                           path, nb, saves=40, readers=1)
+        assert cr.marker(old.read().decode()) == 0, "a reader of the old file reads it whole"
+    assert not seen.lost and seen.torn_disk_reads == 0, seen.summary()
+    assert seen.answers["read answered 200"] > 0, seen.summary()
+    after = path.stat()
+    assert after.st_ino != before.st_ino, "the save wrote in place: the course's contents manager is not in use"
+    assert (after.st_mode & 0o777, after.st_uid, after.st_gid) == (0o640, before.st_uid, before.st_gid)
 
 
 def _as(user: str, code: str) -> subprocess.CompletedProcess:
