@@ -22,6 +22,7 @@ import json
 import os
 import subprocess
 import sys
+import tempfile
 
 import pytest
 
@@ -196,6 +197,34 @@ def test_the_doctor_says_where_the_locks_are_and_whether_they_are_safe(pool):
     assert f"sandbox uid locks: {pool.LOCK_DIR} (root's, not writable by others" in pool.describe()
     os.chmod(pool.LOCK_DIR, 0o770)
     assert pool.describe().startswith(f"sandbox uid locks: UNSAFE: unsafe sandbox lock folder {pool.LOCK_DIR}")
+
+
+@root_only
+def test_the_test_accounts_lock_never_follows_a_link_in_tmp(pool, tmp_path, monkeypatch):
+    """``ordinary_user.run_as_user`` (root) locks the account's runs in root's state folder; the
+    older ``/tmp/<user>.lock`` is taken only as a regular file of root's, never created through
+    a link (it used to be opened with ``open(..., "w")``: a link truncated or made its target)."""
+    from . import ordinary_user
+
+    fake_tmp = tmp_path / "tmp"
+    fake_tmp.mkdir(mode=0o777)
+    os.chmod(fake_tmp, 0o1777)
+    monkeypatch.setattr(tempfile, "tempdir", str(fake_tmp))
+    target = tmp_path / "etc-nologin"
+    os.symlink(target, fake_tmp / "someone.lock")
+    fds = ordinary_user.account_lock("someone")
+    try:
+        assert not target.exists() and len(fds) == 1
+        assert (pool.LOCK_DIR.parent / "test-accounts" / "someone.lock").is_file()
+    finally:
+        for fd in fds:
+            os.close(fd)
+    os.unlink(fake_tmp / "someone.lock")
+    (fake_tmp / "someone.lock").write_text("")  # an older checkout's lock: held too
+    fds = ordinary_user.account_lock("someone")
+    assert len(fds) == 2
+    for fd in fds:
+        os.close(fd)
 
 
 def test_the_lock_folder_is_under_run_or_var_lib():
