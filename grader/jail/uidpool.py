@@ -70,11 +70,12 @@ def default_lock_dir(run: str = "/run") -> Path:
 LOCK_DIR = default_lock_dir()
 
 
-def _unsafe(where: str, why: str) -> UnsafeSharedState:
+def _unsafe(where: str, why: str, folder: str | os.PathLike | None = None) -> UnsafeSharedState:
+    """The one-line refusal: ``where`` (on the path of ``folder``, default :data:`LOCK_DIR`) ``why``."""
     return UnsafeSharedState(
-        f"unsafe sandbox lock folder {LOCK_DIR}: {where} {why}, so another account could hold or redirect root's "
-        f"sandbox locks; grading refuses. Remove it or make it root's alone (chown root:root, chmod go-w) and "
-        "grade again ('python -m grader.sandbox' checks it)")
+        f"unsafe sandbox lock folder {folder or LOCK_DIR}: {where} {why}, so another account could hold or redirect "
+        f"root's sandbox locks; grading refuses. Remove it or make it root's alone (chown root:root, chmod go-w) "
+        "and grade again ('python -m grader.sandbox' checks it)")
 
 
 def _why_unsafe(st: os.stat_result, final: bool) -> str:
@@ -97,7 +98,7 @@ def open_private_dir(path: str | os.PathLike, create: bool = True, mode: int = 0
     try:
         why = _why_unsafe(os.fstat(fd), final=len(parts) == 1)
         if why:
-            raise _unsafe("/", why)
+            raise _unsafe("/", why, path)
         for i, name in enumerate(parts[1:], start=1):
             final, where = i == len(parts) - 1, os.path.join(*parts[:i + 1])
             try:
@@ -115,12 +116,12 @@ def open_private_dir(path: str | os.PathLike, create: bool = True, mode: int = 0
                 raise
             except OSError as exc:  # ELOOP: a symbolic link; ENOTDIR: not a directory
                 kind = "is a symbolic link" if os.path.islink(where) else f"cannot be opened as a directory ({exc.strerror})"
-                raise _unsafe(where, kind) from None
+                raise _unsafe(where, kind, path) from None
             os.close(fd)
             fd = nfd
             why = _why_unsafe(os.fstat(fd), final)
             if why:
-                raise _unsafe(where, why)
+                raise _unsafe(where, why, path)
         return fd
     except BaseException:
         os.close(fd)
