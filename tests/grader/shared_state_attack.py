@@ -4,9 +4,12 @@
 own with a fresh tmpfs on ``/tmp`` (mode 1777, like the host's) and on ``/run`` (0755, or 1777 for
 the scenarios where ``/run`` is world-writable), so nothing the host or another grader uses is
 touched. In it, an unprivileged uid (``nobody``) or root prepares the scenario's lock folder, then
-root runs ``python -m grader judge tiny-delaunay <accepted solution> --json``; the result is
-printed as one JSON object: ``rc``, ``stderr``, ``seconds`` and ``created`` (files that appeared
-in ``/tmp/victim``, a root-owned folder the attacker's symbolic links point into).
+root runs the CLI, ``grader.cli.main(["judge", "tiny-delaunay", <accepted solution>, "--json"])``
+as ``python -m grader`` does, with one change: the pool's uids start at :data:`BASE` (62700),
+outside the real pool (62000-62511), since the namespace's lock folders are not the host's and a
+uid shared with another grader on the host would get its processes killed. The result is printed
+as one JSON object: ``rc``, ``stderr``, ``seconds`` and ``created`` (files that appeared in
+``/tmp/victim``, a root-owned folder the attacker's symbolic links point into).
 
 Scenarios (``SCENARIOS``): the old location ``/tmp/grader-sandbox-uids`` made by the attacker
 with every lock held (``tmp-held``) or every lock a symbolic link (``tmp-links``); the same under
@@ -30,7 +33,21 @@ from pathlib import Path
 REPO = Path(__file__).resolve().parents[2]
 ACCEPTED = REPO / "solutions" / "delaunay" / "accepted_walk.py"
 NOBODY = 65534
-UIDS = range(62000, 62512)  # the whole pool, old and new (grader.jail.uidpool.UID_BASE, UID_COUNT)
+#: First uid of the pool in the namespace (the real one starts at 62000); the attacker takes all 512.
+BASE = 62700
+UIDS = range(BASE, BASE + 512)
+#: The CLI as ``python -m grader`` runs it, the pool moved to BASE (a grader from before
+#: ``grader.jail.uidpool`` kept it in ``grader.jail.sandbox``: the tests show its behaviour too).
+JUDGE = """
+import sys
+try:
+    from grader.jail import uidpool as pool
+except ImportError:
+    from grader.jail import sandbox as pool
+pool.UID_BASE = int(sys.argv[1])
+from grader.cli import main
+sys.exit(main(sys.argv[2:]))
+"""
 #: scenario -> (mode of the namespace's /run, lock folder, who makes it, what it is)
 SCENARIOS = {
     "tmp-held": ("0755", "/tmp/grader-sandbox-uids", "nobody", "held"),
@@ -109,7 +126,7 @@ def run(scenario: str, timeout: float = 300) -> dict:
             return {"error": said or "the scenario's process died"}
         env = {**os.environ, "GRADER_PROBLEMS": str(REPO / "tests" / "grader" / "fixtures")}
         t0 = time.monotonic()
-        r = subprocess.run([sys.executable, "-m", "grader", "judge", "tiny-delaunay", str(ACCEPTED), "--json"],
+        r = subprocess.run([sys.executable, "-c", JUDGE, str(BASE), "judge", "tiny-delaunay", str(ACCEPTED), "--json"],
                            cwd=REPO, env=env, capture_output=True, text=True, timeout=timeout)
         return {"rc": r.returncode, "stderr": r.stderr, "seconds": round(time.monotonic() - t0, 1),
                 "created": sorted(os.listdir(VICTIM)),

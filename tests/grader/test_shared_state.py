@@ -60,12 +60,14 @@ def one_line(stderr: str, starts: str) -> str:
 @pytest.fixture
 def pool(tmp_path, monkeypatch):
     """:mod:`grader.jail.uidpool` with its lock folder in ``tmp_path`` (root-owned, 0700), three
-    uids, a 0.3 s wait and no legacy folder: what a test holds there is no other grader's."""
+    uids outside the real pool (62600-62602: a sandbox run here never shares a uid with another
+    grader on the host), a 0.3 s wait and no legacy folder: what a test holds is no other grader's."""
     from grader.jail import uidpool
 
     os.chmod(tmp_path, 0o700)
     monkeypatch.setattr(uidpool, "LOCK_DIR", tmp_path / "locks")
     monkeypatch.setattr(uidpool, "LEGACY_LOCK_DIR", None)
+    monkeypatch.setattr(uidpool, "UID_BASE", 62600)
     monkeypatch.setattr(uidpool, "UID_COUNT", 3)
     monkeypatch.setattr(uidpool, "SLOT_WAIT_S", 0.3)
     monkeypatch.setenv("GRADER_PROBLEMS", str(HERE / "fixtures"))
@@ -119,7 +121,7 @@ def test_every_uid_taken_is_a_one_line_refusal(pool, capsys):
         for s in slots:
             s.close()
     assert code == 2
-    line = one_line(capsys.readouterr().err, "error: no free sandbox uid: all 3 uids")
+    line = one_line(capsys.readouterr().err, "error: no free sandbox uid: all 3 uids of root's pool (62600-62602")
     assert str(pool.LOCK_DIR) in line
     assert grader_main(["judge", "tiny-delaunay", str(ACCEPTED)]) == 0  # freed: it judges
 
