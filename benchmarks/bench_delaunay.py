@@ -121,8 +121,11 @@ JIT_CODE = textwrap.dedent("""
 
 
 def _sub(code, *args, env=None):
-    out = subprocess.run([sys.executable, "-c", code, *args], capture_output=True, text=True,
-                         env=env, cwd=tempfile.gettempdir(), timeout=1200)
+    # an empty private folder as the working directory: `python -c` imports from it first (the
+    # shared /tmp would let any account put a numpy.py there)
+    with tempfile.TemporaryDirectory(prefix="bench-cwd-") as cwd:
+        out = subprocess.run([sys.executable, "-c", code, *args], capture_output=True, text=True,
+                             env=env, cwd=cwd, timeout=1200)
     if out.returncode != 0:
         raise RuntimeError(out.stderr)
     return [float(v) for v in out.stdout.strip().splitlines()[-1].split()]
@@ -180,7 +183,7 @@ def main() -> None:
         with tempfile.TemporaryDirectory() as cache:
             env = dict(os.environ, NUMBA_CACHE_DIR=cache, PYTHONPATH=str(ROOT))
             t = time.perf_counter()
-            warm = subprocess.run([sys.executable, "-m", "reference_impl", "warm"], env=env, cwd=tempfile.gettempdir(),
+            warm = subprocess.run([sys.executable, "-m", "reference_impl", "warm"], env=env, cwd=cache,  # private, empty
                                   capture_output=True, text=True, timeout=3600)
             cold = time.perf_counter() - t
             if warm.returncode != 0:

@@ -36,7 +36,7 @@ from typing import Callable, Iterable
 
 from .submissions import SubmissionError, read_submission_bytes
 from .text import clean, csv_cell
-from .jail import require_jail
+from .jail import JailUnavailable, require_jail
 from .judge import Judge
 from .problems import load_problem
 from .store import ResultStore
@@ -322,6 +322,9 @@ def grade_class(problem: str, root: str | Path, db_path: str | Path, jobs: int =
                     j = futures[fut]
                     try:
                         s = fut.result()
+                    except JailUnavailable:  # root's uid pool refused (unsafe, or full): the whole batch stops
+                        pool.shutdown(wait=False, cancel_futures=True)
+                        raise
                     except Exception as exc:  # noqa: BLE001 - a judge fault; the batch goes on
                         s = {"student": j.student, "verdict": "JE", "error": f"{type(exc).__name__}: {exc}"}
                     summaries.append(s)

@@ -21,8 +21,8 @@ where each goes is decided by judging it on the exported groups (``judge=False``
 expected verdict only).
 
 Example:
-    python -m grader export-kattis delaunay /tmp/kattis --groups tiny,large:1   # -> /tmp/kattis/delaunay
-    verifyproblem -p config data validators submissions /tmp/kattis/delaunay
+    python -m grader export-kattis delaunay build/kattis --groups tiny,large:1   # -> build/kattis/delaunay
+    verifyproblem -p config data validators submissions build/kattis/delaunay
 """
 
 from __future__ import annotations

@@ -43,7 +43,7 @@ from traitlets import Unicode
 
 from .course_notebooks import CHECK_ID, group_cell_id
 from .sample_check import is_sample_group
-from .jail import require_jail
+from .jail import JailUnavailable, require_jail
 from .judge import Judge
 from .problems import Problem, check_course, course_folder, load_problem, problems_root, using_course
 from .store import ResultStore
@@ -340,6 +340,9 @@ def _grade_course(problem_id: str, submitted: Path, course_root: Path, jobs: int
         for fut in as_completed(futures):
             try:
                 out.append(fut.result())
+            except JailUnavailable:  # root's uid pool refused (unsafe, or full): the whole batch stops
+                pool.shutdown(wait=False, cancel_futures=True)
+                raise
             except Exception as exc:  # noqa: BLE001 - a judge fault; nbgrader autograde judges it again
                 out.append({"student": futures[fut], "verdict": "JE", "error": f"{type(exc).__name__}: {exc}"})
             r = out[-1]

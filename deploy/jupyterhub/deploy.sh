@@ -3,6 +3,7 @@
 #   sudo deploy/jupyterhub/deploy.sh install            # venv, proxy, accounts, exchange, configs
 #   sudo deploy/jupyterhub/deploy.sh start              # the hub in the foreground (Ctrl-C stops it)
 #   sudo deploy/jupyterhub/deploy.sh down               # stop a hub started by start (pid file)
+#   sudo deploy/jupyterhub/deploy.sh exchange           # only nbgrader's exchange (part of install)
 # Settings (environment, defaults in brackets):
 #   COURSE_HOME [/opt/delaunay-course]   everything the hub serves, except the venv and the homes
 #   HUB_VENV    [$COURSE_HOME/venv]      the shared course venv (built from /usr/bin/python3:
@@ -78,11 +79,33 @@ for p in sorted(src.iterdir()):
 PY
 }
 
+exchange() {  # nbgrader's exchange: every account writes in it, none can take another's folder
+    local instr="${HUB_INSTRUCTORS%%,*}" course="$EXCHANGE/$COURSE_ID" d group
+    mkdir -p "$COURSE_HOME"; chmod 0755 "$COURSE_HOME"
+    # closed (0755) while the course's folders are checked and made: no account adds one meanwhile
+    mkdir -p "$EXCHANGE"; chown root:root "$EXCHANGE"; chmod 0755 "$EXCHANGE"
+    # the course's folders are made here, the instructor's, so no student can make them first (a
+    # course folder of a student's would hold their fake outbound and an inbound they read);
+    # nbgrader's modes, which it keeps for existing folders: inbound 0733 + setgid, plus sticky
+    # (a submission's name cannot be listed, and now cannot be removed by a classmate either)
+    group="$(id -gn "$instr")"
+    for d in "$course" "$course/outbound" "$course/inbound"; do
+        if [ -L "$d" ] || { [ -e "$d" ] && [ "$(stat -c %U "$d")" != "$instr" ]; }; then
+            die "$d is not $instr's folder (a symbolic link, or made by another account): remove it and install again"
+        fi
+    done
+    install -d -o "$instr" -g "$group" -m 0755 "$course" "$course/outbound"
+    install -d -o "$instr" -g "$group" -m 3733 "$course/inbound"
+    # open, sticky: only a folder's owner (or root) renames or removes it; nbgrader compares only
+    # the 0777 bits of the exchange root with its 0777, so it keeps the sticky bit
+    chmod 1777 "$EXCHANGE"
+}
+
 course() {
     local instr="${HUB_INSTRUCTORS%%,*}" role
-    mkdir -p "$COURSE_HOME" "$HUB_STATE" "$EXCHANGE"
+    mkdir -p "$COURSE_HOME" "$HUB_STATE"
     chmod 0755 "$COURSE_HOME"; chmod 0700 "$HUB_STATE"
-    chmod 0777 "$EXCHANGE"                          # nbgrader: every account reads and writes the exchange
+    exchange
     # the students' copy of the problems, readable by everyone: statements, samples, validators and
     # checkers, and a course.yaml without the hidden tests, their generators or the seed (with those
     # a student could rebuild every hidden input); the full packages stay in the instructor's course
@@ -137,5 +160,6 @@ case "${1:-}" in
     install) venv; proxy; accounts; course; echo "installed under $COURSE_HOME (venv $HUB_VENV)";;
     start) start;;
     down) down;;
-    *) die "usage: deploy.sh install|start|down";;
+    exchange) exchange; echo "exchange ready: $EXCHANGE";;
+    *) die "usage: deploy.sh install|start|down|exchange";;
 esac

@@ -4,7 +4,9 @@ One entry point: :class:`Sandbox` (with :class:`Limits`) starts jailed children;
 (:mod:`grader.runner`) talks to them. The modules, none importing a module that imports it back:
 
 ========================  =================================================================
-``sandbox``               the jail: which kind (:func:`jail_kind`), uid slots, rlimits, cleanup
+``sandbox``               the jail: which kind (:func:`jail_kind`), rlimits, cleanup
+``uidpool``               root's pool of sandbox uids; its lock folder, checked to be root's alone
+``errors``                the refusals (:class:`JailUnavailable` and its kinds): one line, exit 2
 ``mounts``                root's child side: staging for bubblewrap, the ``namespaces`` jail
 ``cgroups``               accounting of a whole sandbox: cgroup v1/v2, ``/proc`` sums
 ``seccomp``               the seccomp-BPF filter (denied calls; no new processes, not root)
@@ -26,6 +28,7 @@ Example:
 
 from pathlib import Path
 
+from .errors import NoFreeSlot, UnsafeSharedState
 from .sandbox import (JAIL_ENV, JAIL_WORKDIR, LOCK_DIR, TRUSTED_ENV, UID_BASE, JailUnavailable, Limits, Sandbox,
                       bwrap_path, is_root, jail_kind, mechanism, python_roots, refusal_message, refuses_processes,
                       require_jail, uid_processes)
@@ -34,5 +37,6 @@ from .sandbox import (JAIL_ENV, JAIL_WORKDIR, LOCK_DIR, TRUSTED_ENV, UID_BASE, J
 BOOTSTRAP_PATH = Path(__file__).with_name("child_bootstrap.py")
 
 __all__ = ["BOOTSTRAP_PATH", "JAIL_ENV", "JAIL_WORKDIR", "LOCK_DIR", "TRUSTED_ENV", "UID_BASE", "JailUnavailable",
+           "NoFreeSlot", "UnsafeSharedState",
            "Limits", "Sandbox", "bwrap_path", "is_root", "jail_kind", "mechanism", "python_roots", "refusal_message",
            "refuses_processes", "require_jail", "uid_processes"]

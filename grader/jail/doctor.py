@@ -3,7 +3,8 @@ and to this user, and why.
 
 It probes bubblewrap (as this user, and as root for an unprivileged uid too), reads the kernel's
 user-namespace settings and the cgroup accounting root would get, and prints one line for each
-account with the jail it gets (or that grading refuses there, and the fixes).
+account with the jail it gets (or that grading refuses there, and the fixes), and where root's
+sandbox uid locks are and whether that folder is root's alone (:mod:`grader.jail.uidpool`).
 
 Example:
     >>> "this user" in report()                                    # doctest: +SKIP
@@ -16,7 +17,7 @@ import os
 import sys
 from pathlib import Path
 
-from . import cgroups, seccomp
+from . import cgroups, seccomp, uidpool
 from .sandbox import bwrap_path, bwrap_status, is_root, jail_kind
 
 #: The kernel settings that allow or forbid unprivileged user namespaces (where they exist).
@@ -67,18 +68,22 @@ def report() -> str:
              f"user namespaces: {userns_settings()}"]
     if is_root():
         lines.append(_root_line())
+        lines.append(uidpool.describe())
         lines.append(_user_line(f"an ordinary user (probed as uid {NOBODY})", *bwrap_status(NOBODY)))
     else:
         lines.append("root: not probed from this account (run this as root); root gets bubblewrap or the "
                      "namespaces jail, with cgroup accounting where it can create a cgroup")
         lines.append(_user_line(f"this user (uid {os.getuid()})", *bwrap_status(None)))
+        lines.append(uidpool.describe())
     return "\n".join(lines)
 
 
 def main(argv: list[str] | None = None) -> int:
-    """Print :func:`report`; exit 0 when this account can grade (a kernel jail), else 1."""
-    print(report())
-    return 0 if is_root() or bwrap_status(None)[0] else 1
+    """Print :func:`report`; exit 0 when this account can grade (a kernel jail; root: a safe lock
+    folder), else 1."""
+    text = report()
+    print(text)
+    return 0 if (is_root() and "UNSAFE" not in text) or (not is_root() and bwrap_status(None)[0]) else 1
 
 
 if __name__ == "__main__":

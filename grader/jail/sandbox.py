@@ -43,7 +43,6 @@ Example:
 
 from __future__ import annotations
 
-import fcntl
 import functools
 import os
 import resource
@@ -57,7 +56,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Sequence
 
-from . import cgroups, engines, seccomp
+from . import cgroups, engines, seccomp, uidpool
+from .errors import JailUnavailable
 from .fontcache import matplotlib_fontlist
 from .mounts import CLONE_NEWNET, CLONE_NEWUSER, JAIL_WORKDIR, MPL_DIR, Plan, jail_filesystem, stage_for_bwrap, unshare
 from .paths import outermost, python_roots, under
@@ -66,10 +66,8 @@ from .procs import alive, children, parent, uid_processes
 __all__ = ["Limits", "Sandbox", "JailUnavailable", "jail_kind", "mechanism", "is_root", "bwrap_path", "python_roots",
            "uid_processes", "refusal_message", "refuses_processes", "require_jail", "JAIL_ENV", "TRUSTED_ENV", "LOCK_DIR", "JAIL_WORKDIR", "UID_BASE"]
 
-#: First uid/gid of the pool of dedicated sandbox users (root mode); one per concurrent sandbox.
-UID_BASE = 62000
-UID_COUNT = 512
-LOCK_DIR = Path(tempfile.gettempdir()) / "grader-sandbox-uids"
+#: The pool of dedicated sandbox uids (root mode) and its lock folder: :mod:`grader.jail.uidpool`.
+UID_BASE, UID_COUNT, LOCK_DIR = uidpool.UID_BASE, uidpool.UID_COUNT, uidpool.LOCK_DIR
 #: Never covered even if asked (e.g. a results file in the current directory "/").
 SYSTEM_DIRS = frozenset({"/", "/usr", "/lib", "/lib64", "/bin", "/sbin", "/etc", "/proc", "/dev", "/sys", "/var",
                          "/tmp", "/run", "/opt"})
@@ -96,8 +94,6 @@ _bwrap_works: dict[tuple[str, int | None], tuple[bool, str]] = {}
 _last_mechanism = ""
 
 
-class JailUnavailable(RuntimeError):
-    """No kernel jail can be built for this user: grading refuses (the message names the fixes)."""
 @dataclass(frozen=True)
 class Limits:
     """Resource limits for one child process.
@@ -195,8 +191,12 @@ def refusal_message(reason: str) -> str:
 
 def require_jail() -> None:
     """Raise :class:`JailUnavailable` unless this process can build a kernel jail (class grading
-    checks this before it starts, instead of failing once per student)."""
-    if not is_root() and jail_kind() == "none":
+    checks this before it starts, instead of failing once per student). Root: raises
+    :class:`grader.jail.errors.UnsafeSharedState` when the folder of its uid locks is not root's
+    alone (:func:`grader.jail.uidpool.check_lock_dir`)."""
+    if is_root():
+        uidpool.check_lock_dir()
+    elif jail_kind() == "none":
         why = ("user namespaces are disabled here (GRADER_JAIL=none)" if os.environ.get(JAIL_ENV) == "none"
                else bwrap_status(None)[1])
         raise JailUnavailable(refusal_message(why))
@@ -231,7 +231,7 @@ class Sandbox:
         self.trusted = os.environ.get(TRUSTED_ENV) == "1" if trusted is None else trusted
         self.root_mode = is_root()
         self.uid: int | None = None
-        self._lock_fd: int | None = None
+        self._slot: uidpool.Slot | None = None
         self.private_dir = ""  # parent-only files (captured output, inputs)
         self.host_workdir = ""  # non-root mode: the child's working directory
         repo = str(Path(__file__).resolve().parent.parent)
@@ -253,7 +253,12 @@ class Sandbox:
         self.private_dir = tempfile.mkdtemp(prefix="grader-private-")
         os.chmod(self.private_dir, 0o700)
         if self.root_mode:
-            self._acquire_uid()
+            try:
+                self._slot = uidpool.acquire()  # UnsafeSharedState, NoFreeSlot: a one-line refusal
+            except BaseException:
+                self.close()  # __exit__ is not called when __enter__ raises
+                raise
+            self.uid = self._slot.uid
             self.kill_all()  # leftovers from a crashed grader
             self.kind = jail_kind(self.uid)
             extra = BWRAP_PROCESSES if self.kind == "bwrap" else 0
@@ -292,24 +297,9 @@ class Sandbox:
         for d in (self.private_dir, self.host_workdir):
             if d:
                 shutil.rmtree(d, ignore_errors=True)
-        if self._lock_fd is not None:
-            os.close(self._lock_fd)
-            self._lock_fd = None
-
-    def _acquire_uid(self) -> None:
-        LOCK_DIR.mkdir(mode=0o700, exist_ok=True)
-        start = os.getpid() % UID_COUNT
-        for k in range(UID_COUNT):
-            uid = UID_BASE + (start + k) % UID_COUNT
-            fd = os.open(LOCK_DIR / f"{uid}.lock", os.O_RDWR | os.O_CREAT, 0o600)
-            try:
-                fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
-            except OSError:
-                os.close(fd)
-                continue
-            self.uid, self._lock_fd = uid, fd
-            return
-        raise RuntimeError("no free sandbox uid (too many concurrent sandboxes)")
+        if self._slot is not None:
+            self._slot.close()
+            self._slot = None
 
     def _make_plan(self) -> Plan:
         assert self.group is not None

@@ -1,7 +1,6 @@
 """Shared fixtures for the grader tests (run: .venv/bin/python -m pytest tests/grader -q)."""
 from __future__ import annotations
 
-import fcntl
 import hashlib
 import os
 import time
@@ -12,7 +11,8 @@ import pytest
 from grader.judge import Judge
 from grader.problems import Problem
 from grader.jail.procs import parent
-from grader.sandbox import LOCK_DIR, Sandbox
+from grader.jail import uidpool
+from grader.sandbox import Sandbox
 
 HERE = Path(__file__).resolve().parent
 REPO = HERE.parent.parent
@@ -60,19 +60,18 @@ def sandbox_processes() -> list[int]:
             time.sleep(0.05)
         return left
     pids = []
-    for uid in sorted(USED_UIDS):
-        try:
-            fd = os.open(LOCK_DIR / f"{uid}.lock", os.O_RDWR)
-        except OSError:
-            continue
-        try:
-            try:
-                fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
-            except OSError:
+    dir_fd = uidpool.open_private_dir(uidpool.LOCK_DIR)
+    try:
+        for uid in sorted(USED_UIDS):
+            slot = uidpool.hold(uid, dir_fd)
+            if slot is None:
                 continue  # another grader holds this slot now: what runs under it is not ours
-            pids += _processes_of(uid)
-        finally:
-            os.close(fd)
+            try:
+                pids += _processes_of(uid)
+            finally:
+                slot.close()
+    finally:
+        os.close(dir_fd)
     return pids
 
 

@@ -33,6 +33,7 @@ import tempfile
 from pathlib import Path
 from typing import Sequence
 
+from grader.jail import uidpool
 from grader.jail.mounts import CLONE_NEWNS, MS_BIND, MS_PRIVATE, MS_RDONLY, MS_REC, MS_REMOUNT, mount, unshare
 from grader.jail.paths import outermost, python_roots
 
@@ -76,10 +77,43 @@ def _numba_caches() -> list[Path]:
 def run_as_user(argv: Sequence[str], env: dict[str, str] | None = None, timeout: float = 1800,
                 user: str = USER) -> subprocess.CompletedProcess:
     """Run ``argv`` as ``user`` (see the module docstring) with cwd = the checkout; output captured.
-    One run at a time per account (a lock): the account's tests count its processes."""
-    with open(os.path.join(tempfile.gettempdir(), f"{user}.lock"), "w") as lock:
-        fcntl.flock(lock, fcntl.LOCK_EX)
+    One run at a time per account (a lock, :func:`account_lock`): the account's tests count its processes."""
+    fds = account_lock(user)
+    try:
         return _run_as_user(argv, env, timeout, user)
+    finally:
+        for fd in fds:
+            os.close(fd)
+
+
+def account_lock(user: str) -> list[int]:
+    """Wait for, and hold, the host-wide lock of ``user``'s test runs (every checkout's): the file
+    ``<user>.lock`` in root's state folder (``/run/grader/test-accounts``, checked like the sandbox
+    locks by :func:`grader.jail.uidpool.open_private_dir`), opened without following links. The
+    lock older checkouts took, ``/tmp/<user>.lock``, is held too when it is a regular file of
+    root's (it is never created, truncated or followed: any account can make names in ``/tmp``).
+    Returns the locked descriptors (closing them releases the lock)."""
+    flags = os.O_RDWR | os.O_NOFOLLOW | os.O_CLOEXEC
+    dir_fd = uidpool.open_private_dir(uidpool.LOCK_DIR.parent / "test-accounts")
+    try:
+        fds = [os.open(f"{user}.lock", flags | os.O_CREAT, 0o600, dir_fd=dir_fd)]
+    finally:
+        os.close(dir_fd)
+    tmp_fd = os.open(tempfile.gettempdir(), os.O_RDONLY | os.O_DIRECTORY | os.O_CLOEXEC)
+    try:
+        old = os.open(f"{user}.lock", flags, dir_fd=tmp_fd)
+        st = os.fstat(old)
+        if stat.S_ISREG(st.st_mode) and st.st_uid == 0:
+            fds.append(old)
+        else:
+            os.close(old)
+    except OSError:  # missing, or a symbolic link (ELOOP): not an older checkout's lock
+        pass
+    finally:
+        os.close(tmp_fd)
+    for fd in fds:
+        fcntl.flock(fd, fcntl.LOCK_EX)
+    return fds
 
 
 def _run_as_user(argv: Sequence[str], env: dict[str, str] | None, timeout: float, user: str) -> subprocess.CompletedProcess:

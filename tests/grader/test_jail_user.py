@@ -7,7 +7,9 @@ Two halves:
   instructor's home through cffi and ctypes, sqlite3 on a gradebook, ``.cache/grader/``, a
   classmate's submission, forked helpers, a sleeping orphan, and every older attack), the
   nbgrader end-to-end test (tests/nbgrader/test_course_e2e.py: forgeries gain nothing, every
-  score equals ``python -m grader judge``'s) and this file's ordinary-user tests below;
+  score equals ``python -m grader judge``'s), the account's half of test_shared_state.py (a
+  hostile lock folder changes nothing: the account never uses root's uid pool) and this file's
+  ordinary-user tests below;
 * as that account (the tests marked ``user_only``): the jail is bubblewrap's, the attacks are real
   (without a jail each one succeeds), and where no user namespace can be made grading refuses
   while the trusted mode judges a student's own code.
@@ -39,7 +41,8 @@ HOSTILE = HERE / "hostile"
 NATIVE_ATTACKS = ["instructor_home_cffi", "instructor_home_ctypes", "gradebook_sqlite", "grader_cache_ctypes",
                   "classmate_submission"]
 #: Run as the ordinary account: the corpus, the nbgrader course, the user half of this file.
-USER_RUN = ["tests/grader/test_hostile.py", "tests/nbgrader/test_course_e2e.py", "tests/grader/test_jail_user.py"]
+USER_RUN = ["tests/grader/test_hostile.py", "tests/nbgrader/test_course_e2e.py", "tests/grader/test_jail_user.py",
+            "tests/grader/test_shared_state.py::test_the_accounts_judge_never_uses_the_uid_pool"]
 user_only = pytest.mark.skipif(os.geteuid() == 0, reason="runs as the ordinary account, started by "
                                                           "test_as_an_ordinary_user (this run is root)")
 

@@ -210,6 +210,9 @@ def _as(user: str, code: str) -> subprocess.CompletedProcess:
 def test_isolation_between_students(graded, hub):
     other = pwd.getpwnam("hubtest-student1").pw_dir
     inbound = hub.home / "exchange" / "delaunay-course" / "inbound"
+    # after the round trip's release, submit and collect: deploy.sh's modes are kept (test_exchange.py)
+    assert oct(os.stat(hub.home / "exchange").st_mode & 0o7777) == "0o1777"
+    assert oct(os.stat(inbound).st_mode & 0o7777) == "0o3733"
     probe = f"""
 import os, glob
 leaks = []
@@ -277,18 +280,20 @@ def test_judged_code_that_reads_private_files_gets_a_violation(graded, hub):
                      + "\ndef delaunay(points):\n    return [len(x) for x in LEAKED]\n")
     os.chmod(where, 0o755)
     os.chmod(probe, 0o644)
+    instructor = pwd.getpwnam(hs.INSTRUCTOR)
+    for d in ("cache", "numba"):  # the instructor's own, in this private folder: not a guessable /tmp name
+        (where / d).mkdir(mode=0o700)  # that another account could make first (a numba cache is code)
+        os.chown(where / d, instructor.pw_uid, instructor.pw_gid)
     env = [f"{k}={v}" for k, v in {"GRADER_PROBLEMS": str(hub.home / "course"),
-                                    "GRADER_CACHE": f"/tmp/hubtest-probe-cache-{os.getpid()}",
-                                    "NUMBA_CACHE_DIR": f"/tmp/hubtest-probe-numba-{os.getpid()}",
-                                    "HOME": pwd.getpwnam(hs.INSTRUCTOR).pw_dir}.items()]
+                                    "GRADER_CACHE": str(where / "cache"),
+                                    "NUMBA_CACHE_DIR": str(where / "numba"),
+                                    "HOME": instructor.pw_dir}.items()]
     try:
         r = subprocess.run(["runuser", "-u", hs.INSTRUCTOR, "--", "env", *env,
                             str(REPO / "build" / "hub-venv" / "bin" / "python"),
                             "-m", "grader", "judge", "delaunay", str(probe), "--json"],
                            capture_output=True, text=True, timeout=600, cwd="/")
     finally:
-        for kv in env[1:3]:
-            shutil.rmtree(kv.split("=", 1)[1], ignore_errors=True)
         shutil.rmtree(where, ignore_errors=True)
     assert r.stdout.strip(), r.stderr
     result = json.loads(r.stdout)
