@@ -32,23 +32,27 @@ def _b64(data: bytes) -> str:
     return base64.b64encode(data).decode()
 
 
+#: the wrapper's first line: the judge sees a program that reads its input (stdio mode)
+READS = "import sys; sys.stdin\n"
+
+
 def disguises(code: str) -> dict[str, tuple[str, str]]:
     """The attack: ``code`` as data behind a short wrapper; student -> (wrapper, expected mark)."""
     raw = code.encode()
     chunks = [_b64(raw)[i:i + 400] for i in range(0, len(_b64(raw)), 400)]
     inner = f"import zlib, base64; exec(zlib.decompress(base64.b64decode({_b64(zlib.compress(raw))!r})))\n"
     return {
-        "b64": (f"import base64\nexec(base64.b64decode('{_b64(raw)}'))\n",
-                "runs code decoded from base64 at line 2"),
-        "zlib": (f"import base64 as b, zlib as z\nexec(z.decompress(b.b64decode('{_b64(zlib.compress(raw, 9))}')))\n",
-                 "runs code decoded from base64 + zlib at line 2"),
-        "hex": (f"exec(bytes.fromhex('{raw.hex()}').decode())\n", "runs code decoded from hex at line 1"),
-        "rot13": (f"import codecs\nexec(codecs.decode({codecs.encode(code, 'rot13')!r}, 'rot13'))\n",
-                  "runs code decoded from rot13 at line 2"),
-        "chunks": ("from base64 import b64decode\ns = ''\n" + "".join(f"s += {c!r}\n" for c in chunks)
+        "b64": (f"{READS}import base64\nexec(base64.b64decode('{_b64(raw)}'))\n",
+                "runs code decoded from base64 at line 3"),
+        "zlib": (f"{READS}import base64 as b, zlib as z\nexec(z.decompress(b.b64decode('{_b64(zlib.compress(raw, 9))}')))\n",
+                 "runs code decoded from base64 + zlib at line 3"),
+        "hex": (f"{READS}exec(bytes.fromhex('{raw.hex()}').decode())\n", "runs code decoded from hex at line 2"),
+        "rot13": (f"{READS}import codecs\nexec(codecs.decode({codecs.encode(code, 'rot13')!r}, 'rot13'))\n",
+                  "runs code decoded from rot13 at line 3"),
+        "chunks": (f"{READS}from base64 import b64decode\ns = ''\n" + "".join(f"s += {c!r}\n" for c in chunks)
                    + "run = exec\nrun(b64decode(s))\n", "refers to exec without calling it at line"),
-        "nested": (f"import base64\nexec(base64.b64decode('{_b64(inner.encode())}'))\n",
-                   "runs code decoded from base64 + zlib at line 1 (in the code found at line 2)"),
+        "nested": (f"{READS}import base64\nexec(base64.b64decode('{_b64(inner.encode())}'))\n",
+                   "runs code decoded from base64 + zlib at line 1 (in the code found at line 3)"),
     }
 
 
@@ -78,6 +82,15 @@ def test_an_encoded_copy_is_flagged_with_the_original(attacked, student):
     assert len([d for d in analysis.students if d.name == student][0].code) < 12_000  # the copy: one blob
 
 
+def test_the_wrappers_are_programs_the_judge_runs():
+    """Each wrapper is judged in stdio mode (measured: ``python -m grader judge delaunay`` on each is
+    AC 100/100 in the jail; not repeated here, it takes 10-40 s per file on a loaded machine)."""
+    from grader.submissions import Submission
+
+    for wrapper, _ in disguises(ORIGINAL.read_text()).values():
+        assert Submission.from_source(wrapper).mode("delaunay") == "stdio"
+
+
 @pytest.mark.parametrize("student", list(disguises("x = 1\n")))
 def test_an_encoded_copy_is_marked_with_its_reason(attacked, student):
     _, analysis = attacked
@@ -105,16 +118,16 @@ def test_marks_reach_the_summary_the_csv_and_the_html(attacked, tmp_path):
     root, _ = attacked
     analysis = run("delaunay", root, tmp_path)
     lines = sim.summary_lines(analysis)
-    assert "marked  b64: runs code decoded from base64 at line 2" in lines
+    assert "marked  b64: runs code decoded from base64 at line 3" in lines
     assert lines[-1].endswith(f"{len(disguises('x = 1'))} marked (run code from data)")
     rows = {(r["a"], r["b"]): r for r in csv.DictReader(open(tmp_path / "similarity.csv"))}
     row = rows.get(("orig", "hex")) or rows[("hex", "orig")]
-    assert row["flagged"] == "yes" and "runs code decoded from hex at line 1" in row["a_marks"] + row["b_marks"]
+    assert row["flagged"] == "yes" and "runs code decoded from hex at line 2" in row["a_marks"] + row["b_marks"]
     index = (tmp_path / "similarity.html").read_text()
-    assert "Submissions that run code from data" in index and "runs code decoded from base64 + zlib at line 2" in index
+    assert "Submissions that run code from data" in index and "runs code decoded from base64 + zlib at line 3" in index
     pages = "".join(p.read_text() for p in (tmp_path / "similarity").glob("pair-*.html"))
     assert "Runs code from data: runs code decoded from rot13" in pages
-    assert "# ---- found at line 2, decoded from base64 ----" in pages  # the decoded code is shown
+    assert "# ---- found at line 3, decoded from base64 ----" in pages  # the decoded code is shown
 
 
 @pytest.mark.parametrize("code, reason", [
