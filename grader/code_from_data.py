@@ -4,7 +4,7 @@ A copy can hide from a token-based comparison by travelling as data: a classmate
 base64-encoded in one string and ``exec``'d behind a one-line wrapper is, to copydetect, one
 string token. :func:`unpack` reads a submission's syntax tree (``ast``) and never runs any of
 it. It evaluates only constant expressions built from a small whitelist of pure decoding
-functions (``base64`` b64/b32/b16/b85/a85 and urlsafe, ``zlib``/``gzip``/``bz2``/``lzma``
+functions (:mod:`grader.data_decoders`: ``base64`` b64/b32/b16/b85/a85 and urlsafe, ``zlib``/``gzip``/``bz2``/``lzma``
 decompression capped at :data:`MAX_OUTPUT` bytes, ``codecs.decode`` with rot13/hex/base64/zlib/bz2,
 ``bytes.fromhex``, ``binascii``, concatenation and ``join`` of literals, ``bytes([...])`` of ints,
 ``chr`` over int lists, slices such as ``[::-1]``, ``str.decode``/``encode``) on constant arguments
@@ -35,17 +35,12 @@ Example:
 from __future__ import annotations
 
 import ast
-import base64
-import binascii
-import bz2
-import codecs
-import lzma
-import re
 import time
-import zlib
 from dataclasses import dataclass, field
 
-MAX_OUTPUT = 2 << 20     #: bytes any one decoding step may produce (a decompression bomb stops here)
+from .data_decoders import (BUILTINS, CODECS, DECODERS, MAX_OUTPUT, METHODS, MIN_CANDIDATE, NoValue, TooLarge,
+                            as_list, binop, call_decoder, cap, is_marshal, join_via, method, next_steps, to_chr)
+
 MAX_APPENDIX = 4 << 20   #: characters of decoded code returned per submission
 MAX_LEVELS = 4           #: code that decodes code that decodes code: levels followed
 MAX_CHAIN = 4            #: automatic decoding steps tried on one value
@@ -53,12 +48,8 @@ MAX_DEPTH = 80           #: nesting of one evaluated expression
 MAX_STEPS = 2_000_000    #: evaluation steps per submission
 MAX_MARKS = 20
 MIN_STATEMENTS = 3       #: decoded text counts as code from this many statements
-MIN_CANDIDATE = 24       #: shorter values are not searched for encoded code
 SECONDS = 2.0            #: work per submission (all levels)
 
-_B64 = re.compile(rb"[A-Za-z0-9+/\-_\s]+=*\s*")
-_B32 = re.compile(rb"[A-Z2-7\s]+=*\s*")
-_HEX = re.compile(rb"(?:[0-9a-fA-F]{2}\s*)+")
 _SINKS = {"exec": "runs", "eval": "runs", "compile": "compiles"}
 _BYTECODE = {"marshal.loads", "marshal.load"}
 _PICKLE = {"pickle.loads", "pickle.load", "pickle.Unpickler", "_pickle.loads", "dill.loads", "cloudpickle.loads"}
@@ -68,14 +59,6 @@ _LOADERS = {"importlib.util.spec_from_file_location", "importlib.util.spec_from_
             "importlib.machinery.SourcelessFileLoader", "runpy.run_path", "runpy.run_module", "zipimport.zipimporter",
             "types.FunctionType", "types.CodeType", "types.LambdaType"}
 _INDIRECT = set(_SINKS) | {"__import__"}
-
-
-class _NoValue(Exception):
-    """The expression has no value known without running the program."""
-
-
-class _TooLarge(_NoValue):
-    """A decoding step would produce more than :data:`MAX_OUTPUT`."""
 
 
 class _Stop(Exception):
@@ -94,82 +77,6 @@ class Unpacked:
             self.marks.append(reason)
 
 
-def _capped(data: bytes) -> bytes:
-    if len(data) > MAX_OUTPUT:
-        raise _TooLarge("too large")
-    return data
-
-
-def _inflate(data: bytes, kind: str, wbits: int | None = None) -> bytes:
-    """Decompress at most :data:`MAX_OUTPUT` bytes; a larger output has no value (bomb-safe)."""
-    data = _as_bytes(data)
-    if kind in ("zlib", "gzip"):
-        d = zlib.decompressobj(wbits if wbits is not None else 47)  # 47: zlib or gzip header
-        out = d.decompress(data, MAX_OUTPUT)
-        if d.unconsumed_tail:
-            raise _TooLarge("decompresses to more than MAX_OUTPUT")
-        return out
-    d = bz2.BZ2Decompressor() if kind == "bz2" else lzma.LZMADecompressor()
-    out = d.decompress(data, max_length=MAX_OUTPUT)
-    if not d.eof and not d.needs_input:
-        raise _TooLarge("decompresses to more than MAX_OUTPUT")
-    return out
-
-
-def _as_bytes(v: object) -> bytes:
-    if isinstance(v, (bytes, bytearray)):
-        return bytes(v)
-    if isinstance(v, str):
-        return v.encode("latin-1")  # decoders accept ASCII text; anything else fails below
-    raise _NoValue(type(v).__name__)
-
-
-def _rot13(v: object) -> str:
-    if not isinstance(v, str):
-        raise _NoValue("rot13 of bytes")
-    return codecs.decode(v, "rot13")
-
-
-def _b64(v: object, altchars: object = None) -> bytes:
-    data = _as_bytes(v)
-    if altchars is not None:
-        data = data.translate(bytes.maketrans(_as_bytes(altchars), b"+/"))
-    return base64.b64decode(data.translate(bytes.maketrans(b"-_", b"+/")) + b"==")
-
-
-#: decoding functions by qualified name: (step name shown in a mark, function of the arguments)
-_DECODERS = {
-    **{n: ("base64", _b64) for n in ("base64.b64decode", "base64.standard_b64decode", "base64.urlsafe_b64decode",
-                                      "base64.decodebytes", "base64.decodestring", "binascii.a2b_base64")},
-    **{n: ("base32", lambda v, *a: base64.b32decode(_as_bytes(v), True)) for n in ("base64.b32decode",)},
-    "base64.b32hexdecode": ("base32", lambda v, *a: base64.b32hexdecode(_as_bytes(v), True)),
-    "base64.b85decode": ("base85", lambda v: base64.b85decode(_as_bytes(v))),
-    "base64.a85decode": ("ascii85", lambda v, *a: base64.a85decode(_as_bytes(v), adobe=_as_bytes(v).startswith(b"<~"))),
-    **{n: ("hex", lambda v, *a: binascii.unhexlify(re.sub(rb"\s", b"", _as_bytes(v))))
-       for n in ("base64.b16decode", "binascii.unhexlify", "binascii.a2b_hex", "bytes.fromhex", "bytearray.fromhex")},
-    "zlib.decompress": ("zlib", lambda v, w=None, *a: _inflate(v, "zlib", w if isinstance(w, int) else 15)),
-    "gzip.decompress": ("gzip", lambda v: _inflate(v, "gzip")),
-    "bz2.decompress": ("bz2", lambda v: _inflate(v, "bz2")),
-    "lzma.decompress": ("lzma", lambda v, *a: _inflate(v, "lzma")),
-}
-#: ``codecs.decode``/``encode`` encodings understood: (step name, function)
-_CODECS = {"rot13": ("rot13", _rot13), "rot_13": ("rot13", _rot13), "hex": ("hex", lambda v: binascii.unhexlify(_as_bytes(v))),
-           "hex_codec": ("hex", lambda v: binascii.unhexlify(_as_bytes(v))), "base64": ("base64", _b64),
-           "base_64": ("base64", _b64), "base64_codec": ("base64", _b64), "zlib": ("zlib", lambda v: _inflate(v, "zlib")),
-           "zip": ("zlib", lambda v: _inflate(v, "zlib")), "zlib_codec": ("zlib", lambda v: _inflate(v, "zlib")),
-           "bz2": ("bz2", lambda v: _inflate(v, "bz2")), "bz2_codec": ("bz2", lambda v: _inflate(v, "bz2"))}
-_TEXT_ENCODINGS = {"utf-8", "utf8", "utf_8", "ascii", "latin-1", "latin1", "iso-8859-1", "unicode_escape"}
-
-
-def _join_via(*vias: tuple) -> tuple:
-    out: list[str] = []
-    for via in vias:
-        for step in via:
-            if not out or out[-1] != step:
-                out.append(step)
-    return tuple(out)
-
-
 class _Evaluator:
     """Values of constant expressions of one module, with the whitelist of decoders (nothing else runs)."""
 
@@ -178,7 +85,12 @@ class _Evaluator:
         self.aliases: dict[str, str] = {}           # local name -> module or function it stands for
         self.assigns: dict[str, list[ast.AST]] = {}  # variable -> Assign/AugAssign nodes, in source order
         self.busy: set[str] = set()
-        self.cache: dict[int, tuple | _NoValue] = {}  # id(node) -> value of a node outside comprehensions
+        # names the module binds itself (def, class, parameters, loop targets...): never a builtin
+        self.defined = {n.name for n in ast.walk(tree) if isinstance(n, (ast.FunctionDef, ast.AsyncFunctionDef,
+                                                                          ast.ClassDef))}
+        self.defined |= {n.arg for n in ast.walk(tree) if isinstance(n, ast.arg)}
+        self.defined |= {n.id for n in ast.walk(tree) if isinstance(n, ast.Name) and not isinstance(n.ctx, ast.Load)}
+        self.cache: dict[int, tuple | NoValue] = {}  # id(node) -> value of a node outside comprehensions
         for node in ast.walk(tree):
             if isinstance(node, ast.Import):
                 for a in node.names:
@@ -211,36 +123,36 @@ class _Evaluator:
                     return self.qualname(nodes[0].value)  # m = __import__("zlib"); d = base64.b64decode
                 finally:
                     self.busy.discard(node.id)
-            return None if nodes else node.id
+            return None if nodes or node.id in self.defined else node.id
         if isinstance(node, ast.Attribute):
             base = self.qualname(node.value)
             return f"{base}.{node.attr}" if base else None
         if isinstance(node, ast.Call) and self.qualname(node.func) in _IMPORTERS and node.args:
             try:
                 name = self.value(node.args[0])[0]
-            except _NoValue:
+            except NoValue:
                 return None
             return name if isinstance(name, str) else None
         return None
 
     def value(self, node: ast.AST, depth: int = 0, bound: dict | None = None) -> tuple[object, tuple]:
-        """``(value, decoding steps)`` of a constant expression; raises :class:`_NoValue`."""
+        """``(value, decoding steps)`` of a constant expression; raises :class:`NoValue`."""
         if bound:
             return self._value(node, depth, bound)
         if id(node) not in self.cache:
             try:
                 self.cache[id(node)] = self._value(node, depth, {})
-            except _NoValue as exc:
+            except NoValue as exc:
                 self.cache[id(node)] = exc
         got = self.cache[id(node)]
-        if isinstance(got, _NoValue):
+        if isinstance(got, NoValue):
             raise got
         return got
 
     def _value(self, node: ast.AST, depth: int, bound: dict) -> tuple[object, tuple]:
         self.tick()
         if depth > MAX_DEPTH:
-            raise _NoValue("too deep")
+            raise NoValue("too deep")
         d = depth + 1
         if isinstance(node, ast.Constant) and isinstance(node.value, (str, bytes, int)) and not isinstance(node.value, bool):
             return node.value, ()
@@ -248,45 +160,45 @@ class _Evaluator:
             return self._name(node.id, d, bound)
         if isinstance(node, (ast.List, ast.Tuple)):
             items = [self.value(e, d, bound) for e in node.elts]
-            return [v for v, _ in items], _join_via(*(w for _, w in items))
+            return [v for v, _ in items], join_via(*(w for _, w in items))
         if isinstance(node, ast.JoinedStr):
             parts = [self.value(p.value if isinstance(p, ast.FormattedValue) else p, d, bound) for p in node.values
                      if not (isinstance(p, ast.FormattedValue) and (p.format_spec or p.conversion != -1))]
             if len(parts) != len(node.values) or not all(isinstance(v, (str, int)) for v, _ in parts):
-                raise _NoValue("f-string")
-            return _cap("".join(str(v) for v, _ in parts)), _join_via(*(w for _, w in parts))
+                raise NoValue("f-string")
+            return cap("".join(str(v) for v, _ in parts)), join_via(*(w for _, w in parts))
         if isinstance(node, ast.UnaryOp) and isinstance(node.op, (ast.USub, ast.Invert, ast.UAdd)):
             v, via = self.value(node.operand, d, bound)
             if not isinstance(v, int):
-                raise _NoValue("unary operator")
+                raise NoValue("unary operator")
             return {ast.USub: -v, ast.Invert: ~v, ast.UAdd: v}[type(node.op)], via
         if isinstance(node, ast.BinOp):
             (a, va), (b, vb) = self.value(node.left, d, bound), self.value(node.right, d, bound)
-            return _binop(node.op, a, b), _join_via(va, vb)
+            return binop(node.op, a, b), join_via(va, vb)
         if isinstance(node, ast.Subscript):
             return self._subscript(node, d, bound)
         if isinstance(node, (ast.ListComp, ast.GeneratorExp)):
             return self._comprehension(node, d, bound)
         if isinstance(node, ast.Call) and not any(isinstance(a, ast.Starred) for a in node.args):
             return self._call(node, d, bound)
-        raise _NoValue(type(node).__name__)
+        raise NoValue(type(node).__name__)
 
     def _name(self, name: str, depth: int, bound: dict) -> tuple[object, tuple]:
         if name in bound:
             return bound[name], ()
         nodes = self.assigns.get(name)
         if not nodes or name in self.busy:
-            raise _NoValue(name)
+            raise NoValue(name)
         self.busy.add(name)
         try:
             value, via = None, ()
             for n in nodes:  # s = "..."; s += "..." (chunks): folded in source order
                 if n.value is None:
-                    raise _NoValue(name)
+                    raise NoValue(name)
                 v, w = self.value(n.value, depth, {**bound, name: value} if value is not None else bound)
                 if isinstance(n, ast.AugAssign):
-                    v = _binop(n.op, value, v)
-                value, via = v, _join_via(via, w)
+                    v = binop(n.op, value, v)
+                value, via = v, join_via(via, w)
             return value, via
         finally:
             self.busy.discard(name)
@@ -294,152 +206,75 @@ class _Evaluator:
     def _subscript(self, node: ast.Subscript, depth: int, bound: dict) -> tuple[object, tuple]:
         seq, via = self.value(node.value, depth, bound)
         if not isinstance(seq, (str, bytes, list)):
-            raise _NoValue("subscript")
+            raise NoValue("subscript")
         s = node.slice
         if isinstance(s, ast.Slice):
             ends = [None if e is None else self.value(e, depth, bound)[0] for e in (s.lower, s.upper, s.step)]
             if not all(e is None or isinstance(e, int) for e in ends) or ends[2] == 0:
-                raise _NoValue("slice")
+                raise NoValue("slice")
             out = seq[ends[0]:ends[1]:ends[2]]
-            return out, _join_via(via, ("reversal",) if ends[2] is not None and ends[2] < 0 else ())
+            return out, join_via(via, ("reversal",) if ends[2] is not None and ends[2] < 0 else ())
         i = self.value(s, depth, bound)[0]
         if not isinstance(i, int) or not -len(seq) <= i < len(seq):
-            raise _NoValue("index")
+            raise NoValue("index")
         return seq[i], via
 
     def _comprehension(self, node: ast.ListComp | ast.GeneratorExp, depth: int, bound: dict) -> tuple[object, tuple]:
         if len(node.generators) != 1 or node.generators[0].ifs or not isinstance(node.generators[0].target, ast.Name):
-            raise _NoValue("comprehension")
+            raise NoValue("comprehension")
         gen = node.generators[0]
         seq, via = self.value(gen.iter, depth, bound)
         if not isinstance(seq, (str, bytes, list)):
-            raise _NoValue("comprehension over a non-sequence")
+            raise NoValue("comprehension over a non-sequence")
         out = []
         for item in seq:
             v, w = self.value(node.elt, depth, {**bound, gen.target.id: item})
             out.append(v)
-            via = _join_via(via, w)
+            via = join_via(via, w)
         return out, via
 
     def _call(self, node: ast.Call, depth: int, bound: dict) -> tuple[object, tuple]:
         func = node.func
         kwargs = {k.arg: self.value(k.value, depth, bound)[0] for k in node.keywords if k.arg}
         if len(kwargs) != len(node.keywords):
-            raise _NoValue("**kwargs")
-        if isinstance(func, ast.Attribute) and func.attr in _METHODS and self.qualname(func) is None:
+            raise NoValue("**kwargs")
+        if isinstance(func, ast.Attribute) and func.attr in METHODS and self.qualname(func) is None:
             obj, via = self.value(func.value, depth, bound)
             args = [self.value(a, depth, bound) for a in node.args]
-            step, out = _method(obj, func.attr, [a for a, _ in args], kwargs)
-            return out, _join_via(via, *(w for _, w in args), (step,) if step else ())
+            step, out = method(obj, func.attr, [a for a, _ in args], kwargs)
+            return out, join_via(via, *(w for _, w in args), (step,) if step else ())
         name = self.qualname(func)
-        if name not in _DECODERS and name not in _BUILTINS:
-            raise _NoValue(f"call of {name}")
+        if name not in DECODERS and name not in BUILTINS:
+            raise NoValue(f"call of {name}")
         if name == "map" and len(node.args) == 2 and self.qualname(node.args[0]) == "chr":
             seq, via = self.value(node.args[1], depth, bound)
-            return [_chr(c) for c in _seq(seq)], _join_via(via, ("character codes",))
+            return [to_chr(c) for c in as_list(seq)], join_via(via, ("character codes",))
         args = [self.value(a, depth, bound) for a in node.args]
-        values, via = [a for a, _ in args], _join_via(*(w for _, w in args))
-        if name in _DECODERS:
-            step, fn = _DECODERS[name]
-            return _decode(fn, values, {}), _join_via(via, (step,))
+        values, via = [a for a, _ in args], join_via(*(w for _, w in args))
+        if name in DECODERS:
+            step, fn = DECODERS[name]
+            return call_decoder(fn, values, {}), join_via(via, (step,))
         if name in ("codecs.decode", "codecs.encode") and values:
             enc = (values[1] if len(values) > 1 else kwargs.get("encoding", "utf-8"))
             enc = enc.lower().replace("-", "_") if isinstance(enc, str) else None
-            if enc in _CODECS:
-                step, fn = _CODECS[enc]
-                return _decode(fn, values[:1], {}), _join_via(via, (step,))
-            return _method(values[0], "decode" if name == "codecs.decode" else "encode", [enc], {})[1], via
+            if enc in CODECS:
+                step, fn = CODECS[enc]
+                return call_decoder(fn, values[:1], {}), join_via(via, (step,))
+            return method(values[0], "decode" if name == "codecs.decode" else "encode", [enc], {})[1], via
         if name in ("bytes", "bytearray") and len(values) <= 2:
             if len(values) == 2 or (values and isinstance(values[0], str)):
-                return _method(values[0], "encode", values[1:], kwargs)[1], via
-            return _decode(bytes, [_seq(values[0])], {}) if values else b"", _join_via(via, ("byte values",))
+                return method(values[0], "encode", values[1:], kwargs)[1], via
+            return call_decoder(bytes, [as_list(values[0])], {}) if values else b"", join_via(via, ("byte values",))
         if name == "chr" and len(values) == 1:
-            return _chr(values[0]), _join_via(via, ("character codes",))
+            return to_chr(values[0]), join_via(via, ("character codes",))
         if name in ("str", "list") and len(values) == 1 and not kwargs:
             if name == "list":
-                return list(_seq(values[0])), via
+                return list(as_list(values[0])), via
             if isinstance(values[0], (str, int)):
                 return str(values[0]), via
         if name == "reversed" and len(values) == 1:
-            return list(_seq(values[0]))[::-1], _join_via(via, ("reversal",))
-        raise _NoValue(f"call of {name}")
-
-
-_METHODS = {"decode", "encode", "join", "replace", "strip"}
-_BUILTINS = {"map", "codecs.decode", "codecs.encode", "bytes", "bytearray", "chr", "str", "list", "reversed"}
-
-
-def _cap(v: object) -> object:
-    if isinstance(v, (str, bytes, list)) and len(v) > MAX_OUTPUT:
-        raise _NoValue("too large")
-    return v
-
-
-def _seq(v: object) -> list:
-    if isinstance(v, (bytes, list, str)):
-        return list(v)
-    raise _NoValue("not a sequence")
-
-
-def _chr(c: object) -> str:
-    if not isinstance(c, int) or not 0 <= c < 0x110000:
-        raise _NoValue("chr")
-    return chr(c)
-
-
-def _binop(op: ast.operator, a: object, b: object) -> object:
-    same = type(a) is type(b) or (isinstance(a, (bytes, bytearray)) and isinstance(b, (bytes, bytearray)))
-    if isinstance(op, ast.Add) and same and isinstance(a, (str, bytes, list, int)):
-        if isinstance(a, int) and max(abs(a), abs(b)) > 1 << 64:
-            raise _NoValue("large int")
-        return _cap(a + b)
-    if isinstance(a, int) and isinstance(b, int) and max(abs(a), abs(b)) < 1 << 64:
-        ops = {ast.Sub: lambda: a - b, ast.BitXor: lambda: a ^ b, ast.Mod: lambda: a % b if b else None,
-               ast.FloorDiv: lambda: a // b if b else None, ast.Mult: lambda: a * b, ast.BitAnd: lambda: a & b,
-               ast.BitOr: lambda: a | b}
-        out = ops.get(type(op), lambda: None)()
-        if out is not None:
-            return out
-    if isinstance(op, ast.Mult) and isinstance(a, (str, bytes, list)) and isinstance(b, int):
-        if len(a) * max(b, 0) > MAX_OUTPUT:
-            raise _NoValue("too large")
-        return a * b
-    raise _NoValue("operator")
-
-
-def _decode(fn, args: list, kwargs: dict) -> object:
-    try:
-        return _capped(fn(*args, **kwargs))
-    except _NoValue:
-        raise
-    except (ValueError, TypeError, binascii.Error, zlib.error, lzma.LZMAError, OSError, EOFError, OverflowError) as exc:
-        raise _NoValue(str(exc)) from None
-
-
-def _method(obj: object, name: str, args: list, kwargs: dict) -> tuple[str, object]:
-    """A whitelisted method of a str/bytes value: (decoding step or "", result)."""
-    if name == "decode" and isinstance(obj, (bytes, bytearray)):
-        enc = (args[0] if args else kwargs.get("encoding", "utf-8"))
-        if not isinstance(enc, str) or enc.lower() not in _TEXT_ENCODINGS:
-            raise _NoValue("encoding")
-        return "", _decode(lambda: bytes(obj).decode(enc.lower(), "strict"), [], {})
-    if name == "encode" and isinstance(obj, str):
-        enc = (args[0] if args else kwargs.get("encoding", "utf-8"))
-        if not isinstance(enc, str) or enc.lower() not in _TEXT_ENCODINGS - {"unicode_escape"}:
-            raise _NoValue("encoding")
-        return "", _decode(lambda: obj.encode(enc.lower(), "strict"), [], {})
-    if name == "join" and isinstance(obj, (str, bytes)) and len(args) == 1:
-        items = _seq(args[0])
-        if not all(isinstance(i, type(obj)) for i in items):
-            raise _NoValue("join")
-        return "", _cap(obj.join(items))
-    if name == "replace" and isinstance(obj, (str, bytes)) and len(args) == 2 and all(type(a) is type(obj) for a in args):
-        if args[0] and len(obj) // len(args[0]) * len(args[1]) > MAX_OUTPUT:
-            raise _NoValue("too large")
-        return "", obj.replace(*args)
-    if name == "strip" and isinstance(obj, (str, bytes)) and not args:
-        return "", obj.strip()
-    raise _NoValue(f"method {name}")
+            return list(as_list(values[0]))[::-1], join_via(via, ("reversal",))
+        raise NoValue(f"call of {name}")
 
 
 def looks_like_code(text: str, minimum: int = MIN_STATEMENTS) -> bool:
@@ -459,48 +294,6 @@ def looks_like_code(text: str, minimum: int = MIN_STATEMENTS) -> bool:
     return len(stmts) >= minimum and any(not isinstance(n, ast.Expr) for n in stmts)
 
 
-def _is_marshal(b: bytes) -> bool:
-    """A marshalled code object: type byte 'c' (with or without the ref flag), then argcount,
-    posonlyargcount and kwonlyargcount as small little-endian ints (9 zero bytes by chance: 2^-72)."""
-    return len(b) >= 64 and b[0] in (0x63, 0xE3) and all(b[i + 1:i + 4] == b"\0\0\0" for i in (1, 5, 9))
-
-
-def _next_steps(v: str | bytes, via: tuple) -> list[tuple[str, object]]:
-    """The automatic decoding steps worth trying on ``v`` (by its alphabet or magic bytes)."""
-    try:
-        b = v if isinstance(v, bytes) else v.encode("ascii")
-    except UnicodeEncodeError:
-        b = None
-    steps: list[tuple[str, object]] = []
-    if b is not None:
-        s = b.strip()
-        if s[:1] == b"\x78" and len(s) > 2 and int.from_bytes(s[:2], "big") % 31 == 0:
-            steps.append(("zlib", lambda: _inflate(s, "zlib", 15)))
-        if s[:2] == b"\x1f\x8b":
-            steps.append(("gzip", lambda: _inflate(s, "gzip")))
-        if s[:3] == b"BZh":
-            steps.append(("bz2", lambda: _inflate(s, "bz2")))
-        if s[:6] == b"\xfd7zXZ\x00" or s[:3] == b"\x5d\x00\x00":
-            steps.append(("lzma", lambda: _inflate(s, "lzma")))
-        if len(s) >= MIN_CANDIDATE:
-            if _HEX.fullmatch(s):
-                steps.append(("hex", lambda: binascii.unhexlify(re.sub(rb"\s", b"", s))))
-            if _B32.fullmatch(s):
-                steps.append(("base32", lambda: base64.b32decode(re.sub(rb"\s", b"", s))))
-            if _B64.fullmatch(s):
-                steps.append(("base64", lambda: _b64(s)))
-            if s.startswith(b"<~"):
-                steps.append(("ascii85", lambda: base64.a85decode(s, adobe=True)))
-            elif not re.search(rb"[\s\"',./:\[\]\\]", s):
-                steps.append(("base85", lambda: base64.b85decode(s)))
-    if isinstance(v, str) and len(v) >= MIN_CANDIDATE:
-        if "rot13" not in via:
-            steps.append(("rot13", lambda: codecs.decode(v, "rot13")))
-        if "reversal" not in via:
-            steps.append(("reversal", lambda: v[::-1]))
-    return steps
-
-
 def _find_code(v: object, via: tuple, ev: _Evaluator, minimum: int, depth: int = 0) -> tuple[str, str | None, tuple]:
     """Search a few automatic decoding steps from ``v`` for Python code (``minimum`` statements)
     or a marshal blob: ``(kind, text, steps)``, kind ``"code"``, ``"bytecode"`` or ``""`` (none)."""
@@ -509,7 +302,7 @@ def _find_code(v: object, via: tuple, ev: _Evaluator, minimum: int, depth: int =
         v = bytes(v)
     if not isinstance(v, (str, bytes)) or len(v) < 8:
         return "", None, via
-    if isinstance(v, bytes) and _is_marshal(v):
+    if isinstance(v, bytes) and is_marshal(v):
         return "bytecode", None, via
     try:
         text = v if isinstance(v, str) else v.decode("utf-8")
@@ -519,10 +312,10 @@ def _find_code(v: object, via: tuple, ev: _Evaluator, minimum: int, depth: int =
         return "code", text, via
     if depth >= MAX_CHAIN:
         return "", None, via
-    for step, fn in _next_steps(v, via):
+    for step, fn in next_steps(v, via):
         try:
-            out = _decode(fn, [], {})
-        except _NoValue:
+            out = call_decoder(fn, [], {})
+        except NoValue:
             continue
         if out == v:
             continue
@@ -585,7 +378,7 @@ class _Reader:
                 continue
             try:
                 name = self.ev.qualname(node.func)
-            except _NoValue:
+            except NoValue:
                 name = None
             name = name.removeprefix("builtins.") if name else None
             first = node.args[0] if node.args else None
@@ -597,11 +390,11 @@ class _Reader:
                 verb = _SINKS[name]
                 try:
                     v, via = self.ev.value(first)
-                except _TooLarge:
+                except TooLarge:
                     self.out.mark(f"{verb} data that decodes to more than {MAX_OUTPUT >> 20} MiB at line {line} "
                                   "(not examined)")
                     continue
-                except _NoValue:
+                except NoValue:
                     self.out.mark(f"{verb} code computed at run time ({name} of a non-literal) at line {line}")
                     continue
                 kind, _ = self.examine(v, via, line, sink=True)
@@ -617,7 +410,7 @@ class _Reader:
             elif name in _IMPORTERS and first is not None:
                 try:
                     fixed = isinstance(self.ev.value(first)[0], str)
-                except _NoValue:
+                except NoValue:
                     fixed = False
                 if not fixed:
                     self.out.mark(f"imports a module named at run time at line {line}")
@@ -626,7 +419,7 @@ class _Reader:
             elif name == "getattr" and len(node.args) >= 2:
                 try:
                     attr = self.ev.value(node.args[1])[0]
-                except _NoValue:
+                except NoValue:
                     continue
                 if attr in _INDIRECT or attr in ("loads", "exec_module"):
                     self.out.mark(f"reaches {attr} through getattr at line {line}")
@@ -637,7 +430,7 @@ class _Reader:
         if isinstance(node, ast.expr) and not isinstance(node, (ast.Name, ast.Attribute)) and id(node) not in docstrings:
             try:
                 v, via = self.ev.value(node)
-            except _NoValue:
+            except NoValue:
                 pass
             else:
                 if isinstance(v, (str, bytes, bytearray)) and len(v) >= MIN_CANDIDATE // 2:

@@ -106,6 +106,10 @@ def test_innocent_solutions_are_neither_marked_nor_flagged(attacked):
     assert {d.name for d in analysis.marked} == set(disguises("x = 1\n"))
     assert not [p for p in analysis.flagged if {p.a.name, p.b.name} <= innocent]
     assert [(p.a.name, p.b.name) for p in analysis.flagged if innocent & {p.a.name, p.b.name} - {"orig"}] == []
+    # functions of one's own named like builtins, and re.compile, are not exec/eval/compile
+    own = ("import re\nfrom re import compile\nP = re.compile(input())\nQ = compile('a+')\n"
+           "def eval(x):\n    return x\nprint(eval(3))\nclass A:\n    def exec(self, q):\n        return q\n")
+    assert cfd.unpack(own) == cfd.Unpacked()
     # no accepted solution of any problem runs code from data
     for f in sorted(REPO.glob("solutions/*/accepted_*.py")):
         if not f.is_symlink():
