@@ -35,6 +35,7 @@ Example:
 from __future__ import annotations
 
 import ast
+import re
 import time
 from dataclasses import dataclass, field
 
@@ -80,19 +81,23 @@ class Unpacked:
 class _Evaluator:
     """Values of constant expressions of one module, with the whitelist of decoders (nothing else runs)."""
 
-    def __init__(self, tree: ast.Module, deadline: float) -> None:
+    def __init__(self, nodes: list[ast.AST], deadline: float) -> None:
         self.deadline, self.steps = deadline, 0
         self.aliases: dict[str, str] = {}           # local name -> module or function it stands for
         self.assigns: dict[str, list[ast.AST]] = {}  # variable -> Assign/AugAssign nodes, in source order
         self.busy: set[str] = set()
         # names the module binds itself (def, class, parameters, loop targets...): never a builtin
-        self.defined = {n.name for n in ast.walk(tree) if isinstance(n, (ast.FunctionDef, ast.AsyncFunctionDef,
-                                                                          ast.ClassDef))}
-        self.defined |= {n.arg for n in ast.walk(tree) if isinstance(n, ast.arg)}
-        self.defined |= {n.id for n in ast.walk(tree) if isinstance(n, ast.Name) and not isinstance(n.ctx, ast.Load)}
+        self.defined: set[str] = set()
         self.cache: dict[int, tuple | NoValue] = {}  # id(node) -> value of a node outside comprehensions
-        for node in ast.walk(tree):
-            if isinstance(node, ast.Import):
+        for node in nodes:
+            if isinstance(node, ast.Name):
+                if not isinstance(node.ctx, ast.Load):
+                    self.defined.add(node.id)
+            elif isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+                self.defined.add(node.name)
+            elif isinstance(node, ast.arg):
+                self.defined.add(node.arg)
+            elif isinstance(node, ast.Import):
                 for a in node.names:
                     self.aliases[a.asname or a.name.split(".")[0]] = a.name if a.asname else a.name.split(".")[0]
             elif isinstance(node, ast.ImportFrom) and node.module and not node.level:
@@ -325,14 +330,30 @@ def _find_code(v: object, via: tuple, ev: _Evaluator, minimum: int, depth: int =
     return "", None, via
 
 
-def _docstrings(tree: ast.AST) -> set[int]:
+def _docstrings(nodes: list[ast.AST]) -> set[int]:
     out = set()
-    for node in ast.walk(tree):
+    for node in nodes:
         if isinstance(node, (ast.Module, ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)) and node.body:
             first = node.body[0]
             if isinstance(first, ast.Expr) and isinstance(first.value, ast.Constant):
                 out.add(id(first.value))
     return out
+
+
+#: a source with none of these words runs no code from data (the marks' pass is skipped)
+_RUNNERS = re.compile(r"exec|eval|compile|marshal|pickle|__import__|import_module|runpy|spec_from|FunctionType|CodeType"
+                      r"|LambdaType|getattr|builtins|Unpickler|zipimport|SourceFileLoader|SourcelessFileLoader")
+
+
+#: nodes climbed through without a value of their own (``"".join``, f-string parts, ``for c in``, keywords)
+_PASSED = (ast.Name, ast.Attribute, ast.FormattedValue, ast.comprehension, ast.keyword, ast.Starred)
+
+
+def _data_like(node: ast.AST) -> bool:
+    """Could ``node`` hold encoded code: a long string or bytes literal, or a long list (of codes)?"""
+    if isinstance(node, ast.Constant):
+        return isinstance(node.value, (str, bytes)) and len(node.value) >= MIN_CANDIDATE // 2
+    return isinstance(node, (ast.List, ast.Tuple)) and len(node.elts) >= MIN_CANDIDATE // 2
 
 
 def _steps(via: tuple) -> str:
@@ -343,7 +364,13 @@ class _Reader:
     """One level of :func:`unpack`: marks and decoded pieces of one module."""
 
     def __init__(self, tree: ast.Module, deadline: float, out: Unpacked) -> None:
-        self.tree, self.ev, self.out = tree, _Evaluator(tree, deadline), out
+        self.tree, self.nodes, self.out = tree, [tree], out
+        self.parents: dict[int, ast.AST] = {}
+        for node in self.nodes:  # ast.walk's order, keeping each node's parent
+            for child in ast.iter_child_nodes(node):
+                self.parents[id(child)] = node
+                self.nodes.append(child)
+        self.ev = _Evaluator(self.nodes, deadline)
         self.pieces: list[tuple[int, tuple, str]] = []   # (line, decoding steps, code)
         self.seen: set[str] = set()
         self.sink_args: set[int] = set()
@@ -361,8 +388,10 @@ class _Reader:
 
     def calls(self) -> None:
         """Marks: every way of running code from data, and what each runs when it is a constant."""
-        funcs = {id(n.func) for n in ast.walk(self.tree) if isinstance(n, ast.Call)}
-        for node in ast.walk(self.tree):
+        funcs = {id(n.func) for n in self.nodes if isinstance(n, ast.Call)}
+        for node in self.nodes:
+            if not isinstance(node, (ast.Name, ast.Attribute, ast.Subscript, ast.Call)):
+                continue
             self.ev.tick()
             line = getattr(node, "lineno", 0)
             if isinstance(node, (ast.Name, ast.Attribute)) and id(node) not in funcs:
@@ -424,21 +453,34 @@ class _Reader:
                 if attr in _INDIRECT or attr in ("loads", "exec_module"):
                     self.out.mark(f"reaches {attr} through getattr at line {line}")
 
-    def data(self, node: ast.AST, docstrings: set[int]) -> None:
-        """Every maximal constant expression (literal or whitelisted decoding of literals), examined."""
-        self.ev.tick()
-        if isinstance(node, ast.expr) and not isinstance(node, (ast.Name, ast.Attribute)) and id(node) not in docstrings:
-            try:
-                v, via = self.ev.value(node)
-            except NoValue:
-                pass
-            else:
-                if isinstance(v, (str, bytes, bytearray)) and len(v) >= MIN_CANDIDATE // 2:
-                    self.examine(v, via, getattr(node, "lineno", 0), id(node) in self.sink_args)
-                if not isinstance(v, list):
-                    return
-        for child in ast.iter_child_nodes(node):
-            self.data(child, docstrings)
+    def data(self, docstrings: set[int]) -> None:
+        """From each long literal up to the largest expression around it that has a constant text
+        value (the literal itself, or a whitelisted decoding of it): that value, examined once."""
+        done: set[int] = set()
+        leaves = [n for n in self.nodes if _data_like(n) and id(n) not in docstrings]
+        names = set()  # variables assigned from long literals: their uses are leaves too ("".join(parts))
+        for leaf in leaves:
+            node = leaf
+            while node is not None and not isinstance(node, ast.stmt):
+                node = self.parents.get(id(node))
+            if isinstance(node, (ast.Assign, ast.AugAssign, ast.AnnAssign)):
+                targets = node.targets if isinstance(node, ast.Assign) else [node.target]
+                names |= {t.id for t in targets if isinstance(t, ast.Name)}
+        leaves += [n for n in self.nodes if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Load) and n.id in names]
+        for leaf in leaves:
+            best, node = None, leaf
+            while isinstance(node, (ast.expr, ast.comprehension, ast.keyword)):
+                if node is leaf or not isinstance(node, _PASSED):
+                    try:
+                        v, via = self.ev.value(node)
+                    except NoValue:
+                        break
+                    if isinstance(v, (str, bytes, bytearray)):
+                        best = (node, v, via)
+                node = self.parents.get(id(node))
+            if best and id(best[0]) not in done and len(best[1]) >= MIN_CANDIDATE // 2:
+                done.add(id(best[0]))
+                self.examine(best[1], best[2], getattr(best[0], "lineno", 0), id(best[0]) in self.sink_args)
 
 
 def unpack(source: str, language: str = "python", *, _level: int = 0, _deadline: float | None = None) -> Unpacked:
@@ -455,8 +497,10 @@ def unpack(source: str, language: str = "python", *, _level: int = 0, _deadline:
         return out
     reader = _Reader(tree, deadline, out)
     try:
-        reader.calls()
-        reader.data(tree, _docstrings(tree))
+        if _RUNNERS.search(source):
+            reader.calls()
+        if any(_data_like(n) for n in reader.nodes):
+            reader.data(_docstrings(reader.nodes))
     except _Stop:
         out.mark("stopped decoding at the time limit: some data was not examined")
     except RecursionError:

@@ -179,6 +179,10 @@ def test_more_decoders_and_code_written_to_a_module():
             "sol = importlib.import_module('sol')\n")
     found = cfd.unpack(code)
     assert "def delaunay(points)" in found.code and found.marks == ["holds Python code encoded as base64 at line 2"]
+    # chunks in a list, joined where they are written out
+    chunks = [_b64(raw)[i:i + 300] for i in range(0, len(_b64(raw)), 300)]
+    found = cfd.unpack(f"import base64\nPARTS = {chunks!r}\n\n\nopen('s.py', 'wb').write(base64.b64decode(''.join(PARTS)))\n")
+    assert "def delaunay(points)" in found.code and found.marks == ["holds Python code encoded as base64 at line 5"]
     # a blob that is only data, decoded automatically (no decoder called in the file)
     found = cfd.unpack(f"BLOB = {base64.b85encode(zlib.compress(raw)).decode()!r}\n")
     assert "def delaunay(points)" in found.code and found.marks == ["holds Python code encoded as base85 + zlib at line 1"]
