@@ -303,6 +303,8 @@ def _find_code(v: object, via: tuple, ev: _Evaluator, minimum: int, depth: int =
     """Search a few automatic decoding steps from ``v`` for Python code (``minimum`` statements)
     or a marshal blob: ``(kind, text, steps)``, kind ``"code"``, ``"bytecode"`` or ``""`` (none)."""
     ev.tick()
+    if time.monotonic() > ev.deadline:  # each call may parse up to MAX_OUTPUT of text: checked every time
+        raise _Stop
     if isinstance(v, bytearray):
         v = bytes(v)
     if not isinstance(v, (str, bytes)) or len(v) < 8:
