@@ -209,9 +209,25 @@ def test_decoding_is_safe_nothing_runs_and_bombs_stop(tmp_path, monkeypatch):
     found = cfd.unpack(layer)
     assert "def delaunay" not in found.code and len(found.marks) == cfd.MAX_LEVELS
     monkeypatch.setattr(cfd, "SECONDS", 0.0)  # the time limit: stops with a mark, not an error
-    monkeypatch.setattr(cfd, "MAX_STEPS", 50)
+    stopped = cfd.unpack(disguises(ORIGINAL.read_text())["b64"][0])
+    assert stopped.marks == ["stopped decoding at the time limit: some data was not examined"] and stopped.code == ""
+    monkeypatch.setattr(cfd, "SECONDS", 2.0)
+    monkeypatch.setattr(cfd, "MAX_STEPS", 50)  # and the step limit
     assert "stopped decoding at the time limit: some data was not examined" in cfd.unpack(
         disguises(ORIGINAL.read_text())["chunks"][0]).marks
+
+
+def test_decoded_code_is_escaped_in_the_report(tmp_path):
+    from grader.similarity_report import run
+
+    evil = ORIGINAL.read_text() + "\nBANNER = '</pre><script>alert(1)</script>'\n"
+    for student, code in (("ann", evil), ("ben", disguises(evil)["zlib"][0])):
+        (tmp_path / "class" / student).mkdir(parents=True)
+        (tmp_path / "class" / student / "delaunay.py").write_text(code)
+    analysis = run("delaunay", tmp_path / "class", tmp_path / "out")
+    assert len(analysis.flagged) == 1 and analysis.flagged[0].score > 0.9
+    page = (tmp_path / "out" / "similarity" / "pair-1.html").read_text()
+    assert "<script>" not in page and page.count("&lt;script&gt;alert(1)&lt;/script&gt;") == 2
 
 
 def test_only_python_is_unpacked_and_the_import_circle_is_gone():
