@@ -178,8 +178,14 @@ class _Evaluator:
                 raise NoValue("unary operator")
             return {ast.USub: -v, ast.Invert: ~v, ast.UAdd: v}[type(node.op)], via
         if isinstance(node, ast.BinOp):
-            (a, va), (b, vb) = self.value(node.left, d, bound), self.value(node.right, d, bound)
-            return binop(node.op, a, b), join_via(va, vb)
+            chain = [node]  # a + b + c + ... (chunks): a left-leaning chain, folded without recursion
+            while isinstance(chain[-1].left, ast.BinOp) and type(chain[-1].left.op) is type(node.op):
+                chain.append(chain[-1].left)
+            value, via = self.value(chain[-1].left, d, bound)
+            for link in reversed(chain):
+                b, vb = self.value(link.right, d, bound)
+                value, via = binop(link.op, value, b), join_via(via, vb)
+            return value, via
         if isinstance(node, ast.Subscript):
             return self._subscript(node, d, bound)
         if isinstance(node, (ast.ListComp, ast.GeneratorExp)):
@@ -376,6 +382,7 @@ class _Reader:
         self.pieces: list[tuple[int, tuple, str]] = []   # (line, decoding steps, code)
         self.seen: set[str] = set()
         self.sink_args: set[int] = set()
+        self.stmt_of: dict[int, ast.AST | None] = {}
 
     def examine(self, v: object, via: tuple, line: int, sink: bool) -> tuple[str, tuple]:
         kind, text, steps = _find_code(v, via, self.ev, 1 if sink else MIN_STATEMENTS)
@@ -459,30 +466,55 @@ class _Reader:
         """From each long literal up to the largest expression around it that has a constant text
         value (the literal itself, or a whitelisted decoding of it): that value, examined once."""
         done: set[int] = set()
-        leaves = [n for n in self.nodes if _data_like(n) and id(n) not in docstrings]
+        leaves = [n for n in self.nodes if id(n) not in docstrings and self.data_like(n)]
         names = set()  # variables assigned from long literals: their uses are leaves too ("".join(parts))
         for leaf in leaves:
-            node = leaf
-            while node is not None and not isinstance(node, ast.stmt):
-                node = self.parents.get(id(node))
+            node = self.statement(leaf)
             if isinstance(node, (ast.Assign, ast.AugAssign, ast.AnnAssign)):
                 targets = node.targets if isinstance(node, ast.Assign) else [node.target]
                 names |= {t.id for t in targets if isinstance(t, ast.Name)}
         leaves += [n for n in self.nodes if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Load) and n.id in names]
+        above: dict[int, tuple | None] = {}  # node climbed through -> the value found at or above it
         for leaf in leaves:
-            best, node = None, leaf
+            best, node, path = None, leaf, []
             while isinstance(node, (ast.expr, ast.comprehension, ast.keyword)):
-                if node is leaf or not isinstance(node, _PASSED):
+                self.ev.tick()
+                if id(node) in above:  # climbed before from another leaf: the rest of the way is known
+                    best = above[id(node)] or best
+                    break
+                path.append((node, best))
+                parent = self.parents.get(id(node))
+                inner = (isinstance(node, ast.BinOp) and isinstance(parent, ast.BinOp) and parent.left is node
+                         and type(parent.op) is type(node.op))  # only the whole chain a + b + c is evaluated
+                if node is leaf or not (inner or isinstance(node, _PASSED)):
                     try:
                         v, via = self.ev.value(node)
                     except NoValue:
                         break
                     if isinstance(v, (str, bytes, bytearray)):
                         best = (node, v, via)
-                node = self.parents.get(id(node))
+                node = parent
+            for n, below in path:
+                above[id(n)] = best if best is not below else None
             if best and id(best[0]) not in done and len(best[1]) >= MIN_CANDIDATE // 2:
                 done.add(id(best[0]))
                 self.examine(best[1], best[2], getattr(best[0], "lineno", 0), id(best[0]) in self.sink_args)
+
+    def data_like(self, node: ast.AST) -> bool:
+        """A long literal, a long list (of codes), or a literal chunk of a concatenation ``a + b``."""
+        return _data_like(node) or (isinstance(node, ast.Constant) and isinstance(node.value, (str, bytes))
+                                    and isinstance(self.parents.get(id(node)), ast.BinOp))
+
+    def statement(self, node: ast.AST) -> ast.AST | None:
+        """The statement ``node`` is part of (remembered on the way up: long chains stay linear)."""
+        path = []
+        while node is not None and not isinstance(node, ast.stmt) and id(node) not in self.stmt_of:
+            path.append(node)
+            node = self.parents.get(id(node))
+        found = self.stmt_of.get(id(node), node) if node is not None else None
+        for n in path:
+            self.stmt_of[id(n)] = found
+        return found
 
 
 def unpack(source: str, language: str = "python", *, _level: int = 0, _deadline: float | None = None) -> Unpacked:
@@ -501,7 +533,7 @@ def unpack(source: str, language: str = "python", *, _level: int = 0, _deadline:
     try:
         if _RUNNERS.search(source):
             reader.calls()
-        if any(_data_like(n) for n in reader.nodes):
+        if any(reader.data_like(n) for n in reader.nodes):
             reader.data(_docstrings(reader.nodes))
     except _Stop:
         out.mark("stopped decoding at the time limit: some data was not examined")

@@ -183,6 +183,14 @@ def test_more_decoders_and_code_written_to_a_module():
     chunks = [_b64(raw)[i:i + 300] for i in range(0, len(_b64(raw)), 300)]
     found = cfd.unpack(f"import base64\nPARTS = {chunks!r}\n\n\nopen('s.py', 'wb').write(base64.b64decode(''.join(PARTS)))\n")
     assert "def delaunay(points)" in found.code and found.marks == ["holds Python code encoded as base64 at line 5"]
+    # 1881 chunks of 4 characters in one a + b + ... chain (deeper than the evaluator's nesting limit)
+    tiny = " + ".join(repr(_b64(raw)[i:i + 4]) for i in range(0, len(_b64(raw)), 4))
+    for code, mark in ((f"import base64\nexec(base64.b64decode({tiny}))\n", "runs code decoded from base64 at line 2"),
+                       (f"import base64\nS = {tiny}\nopen('s.py', 'wb').write(base64.b64decode(S))\n",
+                        "holds Python code encoded as base64 at line 2")):
+        start = time.process_time()
+        found = cfd.unpack(code)
+        assert "def delaunay(points)" in found.code and found.marks == [mark] and time.process_time() - start < 1
     # a blob that is only data, decoded automatically (no decoder called in the file)
     found = cfd.unpack(f"BLOB = {base64.b85encode(zlib.compress(raw)).decode()!r}\n")
     assert "def delaunay(points)" in found.code and found.marks == ["holds Python code encoded as base85 + zlib at line 1"]
