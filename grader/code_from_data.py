@@ -74,6 +74,7 @@ class Unpacked:
     marks: list[str] = field(default_factory=list)  #: short reasons, e.g. "runs code decoded from base64 at line 3"
 
     def mark(self, reason: str) -> None:
+        """Add ``reason`` once (at most :data:`MAX_MARKS` reasons)."""
         if reason not in self.marks and len(self.marks) < MAX_MARKS:
             self.marks.append(reason)
 
@@ -112,6 +113,7 @@ class _Evaluator:
             nodes.sort(key=lambda n: (n.lineno, n.col_offset))
 
     def tick(self) -> None:
+        """Count one step; :class:`_Stop` past :data:`MAX_STEPS` or the deadline."""
         self.steps += 1
         if self.steps > MAX_STEPS or (self.steps % 512 == 0 and time.monotonic() > self.deadline):
             raise _Stop
@@ -385,6 +387,7 @@ class _Reader:
         self.stmt_of: dict[int, ast.AST | None] = {}
 
     def examine(self, v: object, via: tuple, line: int, sink: bool) -> tuple[str, tuple]:
+        """Look for code in ``v`` (found at ``line``, reached ``exec`` if ``sink``): keep it, mark it."""
         kind, text, steps = _find_code(v, via, self.ev, 1 if sink else MIN_STATEMENTS)
         if kind == "bytecode" and not sink:
             self.out.mark(f"holds compiled bytecode (marshal) at line {line}: it cannot be compared")

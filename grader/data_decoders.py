@@ -24,6 +24,7 @@ import codecs
 import lzma
 import re
 import zlib
+from collections.abc import Callable
 
 MAX_OUTPUT = 2 << 20     #: bytes any one decoding step may produce (a decompression bomb stops here)
 MIN_CANDIDATE = 24       #: shorter values are not searched for encoded code
@@ -108,6 +109,7 @@ _TEXT_ENCODINGS = {"utf-8", "utf8", "utf_8", "ascii", "latin-1", "latin1", "iso-
 
 
 def join_via(*vias: tuple) -> tuple:
+    """The decoding steps of several values, in order, a step repeated at once kept once."""
     out: list[str] = []
     for via in vias:
         for step in via:
@@ -121,24 +123,28 @@ BUILTINS = {"map", "codecs.decode", "codecs.encode", "bytes", "bytearray", "chr"
 
 
 def cap(v: object) -> object:
+    """``v`` if it is no longer than :data:`MAX_OUTPUT`, else :class:`TooLarge`."""
     if isinstance(v, (str, bytes, list)) and len(v) > MAX_OUTPUT:
         raise NoValue("too large")
     return v
 
 
 def as_list(v: object) -> list:
+    """The items of a str, bytes or list value (ints of bytes)."""
     if isinstance(v, (bytes, list, str)):
         return list(v)
     raise NoValue("not a sequence")
 
 
 def to_chr(c: object) -> str:
+    """``chr(c)`` for a valid code point, else :class:`NoValue`."""
     if not isinstance(c, int) or not 0 <= c < 0x110000:
         raise NoValue("chr")
     return chr(c)
 
 
 def binop(op: ast.operator, a: object, b: object) -> object:
+    """``a op b`` for concatenation, repetition (capped) and small-int arithmetic; else :class:`NoValue`."""
     same = type(a) is type(b) or (isinstance(a, (bytes, bytearray)) and isinstance(b, (bytes, bytearray)))
     if isinstance(op, ast.Add) and same and isinstance(a, (str, bytes, list, int)):
         if isinstance(a, int) and max(abs(a), abs(b)) > 1 << 64:
@@ -158,7 +164,8 @@ def binop(op: ast.operator, a: object, b: object) -> object:
     raise NoValue("operator")
 
 
-def call_decoder(fn, args: list, kwargs: dict) -> object:
+def call_decoder(fn: Callable[..., object], args: list, kwargs: dict) -> object:
+    """``fn(*args, **kwargs)`` for a whitelisted decoder: its errors become :class:`NoValue`, its output is capped."""
     try:
         return _capped(fn(*args, **kwargs))
     except NoValue:
