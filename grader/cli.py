@@ -127,7 +127,8 @@ SIMILARITY_DIR = "similarity-report"
 
 
 def _similarity(problem, submissions, report_dir, references, boilerplate, threshold, out) -> None:
-    from .similarity import run, summary_lines
+    from .similarity import summary_lines
+    from .similarity_report import run
 
     analysis = run(problem, submissions, report_dir, references or [], boilerplate or [], threshold)
     for line in summary_lines(analysis):

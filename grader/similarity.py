@@ -9,6 +9,12 @@ folder the instructor names. Fingerprints of the starter code (the problem's sou
 with its solution removed, as nbgrader releases it) and of the statement's code snippets are
 boilerplate: they count for nobody.
 
+Code carried as data is compared too (:mod:`grader.code_from_data`): in a Python file, string
+literals that decode (base64, hex, rot13, zlib, ... through a whitelist of pure decoders evaluated on
+constants, nothing executed) to Python, or that reach ``exec``/``eval``/``compile``, are appended to
+the code that is fingerprinted; a submission that runs code from data is *marked* with a short reason
+(``Document.marks``), decoded or not.
+
 Submissions are found as ``grade`` finds them (``SUBMISSIONS/<student>/<file>``, read with
 :func:`grader.submissions.read_submission_bytes`: no links followed, size capped) or in
 nbgrader's collected layout ``submitted/<student>/<problem>/<problem>.ipynb``; both may be mixed.
@@ -22,6 +28,7 @@ flagged. See ``grader/README.md`` for what the test class scores.
 
 Run:
     python -m grader similarity delaunay class/ --reports sim/ [--reference DIR] [--threshold 0.5]
+    (``grader.similarity_report.run``: this analysis, then the report)
     python -m grader grade delaunay class/ --similarity --reports reports/
 
 Example:
@@ -44,6 +51,7 @@ from pathlib import Path
 import numpy as np
 
 from .classgrade import choose_submission, _student_dirs
+from .code_from_data import unpack
 from .course_notebooks import CODE_STUB
 from .problems import load_problem, problems_root
 from .submissions import SubmissionError, notebook_code, read_submission_bytes
@@ -73,6 +81,13 @@ class Document:
     code: str
     note: str = ""  #: why it could not be read, or which file was chosen
     fp: object = field(default=None, repr=False)
+    decoded: str = field(default="", repr=False)  #: code found in its data (see :mod:`grader.code_from_data`)
+    marks: list[str] = field(default_factory=list)  #: how it runs code from data, one reason each
+
+    @property
+    def compared(self) -> str:
+        """The text that is fingerprinted and shown: the code, then the code decoded from its data."""
+        return self.code + ("\n" + self.decoded if self.decoded else "")
 
 
 @dataclass
@@ -272,9 +287,22 @@ def boilerplate_hashes(codes: list[str]) -> np.ndarray:
     return np.array(sorted(hashes), dtype=np.int64)
 
 
+def language(path: str) -> str:
+    """The language of a document by its file name: ``"python"`` for ``.py``/``.ipynb`` (and no name).
+
+    >>> language("ada/delaunay.ipynb"), language("bo/main.cpp")
+    ('python', 'cpp')
+    """
+    suffix = Path(path).suffix.lower()
+    return "python" if suffix in ("", ".py", ".ipynb") else suffix.lstrip(".")
+
+
 def fingerprint(doc: Document, boiler: np.ndarray | None = None) -> Document:
-    """``doc`` with its winnowed fingerprints (boilerplate hashes removed)."""
-    doc.fp = _fingerprint(doc.path or "submission.py", doc.code, GUARANTEE_T - NOISE_T + 1, boiler)
+    """``doc`` with the code decoded from its data and its marks (Python only), and the winnowed
+    fingerprints of both (boilerplate hashes removed)."""
+    found = unpack(doc.code, language(doc.path))
+    doc.decoded, doc.marks = found.code, found.marks
+    doc.fp = _fingerprint(doc.path or "submission.py", doc.compared, GUARANTEE_T - NOISE_T + 1, boiler)
     return doc
 
 
@@ -303,6 +331,11 @@ class Analysis:
     def flagged(self) -> list[Pair]:
         return [p for p in self.pairs if p.flagged]
 
+    @property
+    def marked(self) -> list[Document]:
+        """The students whose submission runs code from data (or holds encoded code)."""
+        return [d for d in self.students if d.marks]
+
     def best(self, student: Document) -> Pair | None:
         """The student's highest-scoring pair (with a classmate or a reference)."""
         if "_best" not in self.__dict__:
@@ -329,21 +362,12 @@ def analyse(problem: str, root: str | Path, references: list[str | Path] = (), e
     return Analysis(problem, students, refs, pairs, threshold)
 
 
-def run(problem: str, root: str | Path, report_dir: str | Path, references: list[str | Path] = (),
-        extra_boilerplate: list[str | Path] = (), threshold: float = THRESHOLD) -> Analysis:
-    """Analyse the class and write ``report_dir/similarity.html``, ``similarity.csv`` and one page
-    per flagged pair under ``report_dir/similarity/``."""
-    from .similarity_report import write_reports
-
-    analysis = analyse(problem, root, references, extra_boilerplate, threshold)
-    write_reports(analysis, Path(report_dir))
-    return analysis
-
-
 def summary_lines(analysis: Analysis) -> list[str]:
-    """What the command prints: one line per flagged pair, then a count."""
+    """What the command prints: one line per flagged pair, one per marked submission, then a count."""
     lines = [f"{p.score:5.2f}  {p.a.name}  ~  {p.b.name}  ({p.tokens} shared tokens)" for p in analysis.flagged]
+    lines += [f"marked  {d.name}: {'; '.join(d.marks)}" for d in analysis.marked]
     n = len(analysis.students)
     lines.append(f"{analysis.problem}: {n} submissions, {len(analysis.references)} references, "
-                 f"{len(analysis.flagged)} flagged pairs (score >= {analysis.threshold:g})")
+                 f"{len(analysis.flagged)} flagged pairs (score >= {analysis.threshold:g}), "
+                 f"{len(analysis.marked)} marked (run code from data)")
     return lines

@@ -3,6 +3,9 @@
 ``DIR/similarity.html`` ranks the class by each student's highest score (with a classmate or a
 reference) and lists the flagged pairs; ``DIR/similarity/pair-N.html`` shows one flagged pair side
 by side with the shared regions highlighted; ``DIR/similarity.csv`` has one row per compared pair.
+A submission that runs code from data (``Document.marks``, :mod:`grader.code_from_data`) is listed
+with its reasons on the index, on its pair pages and in the CSV; the code decoded from its data is
+shown under its own code, below a comment line naming where it was found.
 Everything that came from a submission (folder names, file names, code) is escaped for HTML;
 links to a student's grading report (``DIR/students/...``, when ``grade --reports`` wrote one)
 are URL-quoted; CSV cells go through :func:`grader.text.csv_cell`.
@@ -25,7 +28,7 @@ from urllib.parse import quote
 import numpy as np
 
 from .report import STUDENTS_DIR, report_name
-from .similarity import Analysis, Pair
+from .similarity import THRESHOLD, Analysis, Document, Pair, analyse
 from .text import clean, csv_cell
 
 MEANING = """The score is the share of a submission's code (after dropping comments, whitespace and the
@@ -95,11 +98,19 @@ def pair_page(analysis: Analysis, pair: Pair, number: int) -> str:
             f"{pair.tokens} shared tokens; {pair.share_a:.0%} of {html.escape(a.name)}'s code is in the other file, "
             f"{pair.share_b:.0%} of {html.escape(b.name)}'s.</p><p class='meaning'>{html.escape(MEANING)}</p>"
             "<div class='side'>"
-            + "".join(f"<div><h2>{html.escape(d.name)}</h2><p>{html.escape(d.path)}</p>"
-                      f"<pre>{show_code(d.code, sl)}</pre></div>"
+            + "".join(f"<div><h2>{html.escape(d.name)}</h2><p>{html.escape(d.path)}</p>{_marks(d)}"
+                      f"<pre>{show_code(d.compared, sl)}</pre></div>"
                       for d, sl in ((a, pair.slices_a), (b, pair.slices_b)))
             + "</div>")
     return _page(f"{analysis.problem}: {a.name} ~ {b.name}", body)
+
+
+def _marks(d: Document) -> str:
+    """A submission's marks as an HTML paragraph (empty when it has none)."""
+    if not d.marks:
+        return ""
+    return ("<p class='flag'>Runs code from data: " + html.escape("; ".join(clean(m, 300) for m in d.marks))
+            + ". The code decoded from its data is compared too (below its own code).</p>")
 
 
 def index_page(analysis: Analysis, report_dir: Path, pages: dict[int, str]) -> str:
@@ -114,11 +125,13 @@ def index_page(analysis: Analysis, report_dir: Path, pages: dict[int, str]) -> s
         link = f' (<a href="{pages[id(best)]}">side by side</a>)' if best and id(best) in pages else ""
         rows.append(f"<tr><td>{rank}</td><td>{_student_link(report_dir, d.name, d.kind)}</td><td{cls}>{score}</td>"
                     f"<td>{html.escape(other.name) if other else ''}{link}</td><td>{html.escape(d.path)}</td>"
-                    f"<td>{html.escape(d.note)}</td></tr>")
+                    f"<td>{html.escape(d.note)}</td><td class='flag'>{html.escape('; '.join(d.marks))}</td></tr>")
     flagged = "".join(
         f"<tr><td>{p.score:.2f}</td><td>{_student_link(report_dir, p.a.name, p.a.kind)}</td>"
         f"<td>{_student_link(report_dir, p.b.name, p.b.kind)}</td><td>{p.tokens}</td>"
         f'<td><a href="{pages[id(p)]}">side by side</a></td></tr>' for p in analysis.flagged)
+    marked = "".join(f"<li><b>{_student_link(report_dir, d.name, d.kind)}</b>: {html.escape('; '.join(d.marks))}</li>"
+                     for d in analysis.marked)
     refs = "".join(f"<li>{html.escape(r.name)} ({html.escape(r.path)})</li>" for r in analysis.references)
     body = (f"<h1>{html.escape(analysis.problem)}: similarity of {len(analysis.students)} submissions</h1>"
             f"<p class='meaning'>{html.escape(MEANING)}</p>"
@@ -127,8 +140,11 @@ def index_page(analysis: Analysis, report_dir: Path, pages: dict[int, str]) -> s
             f"References compared with every student:</p><ul>{refs}</ul>"
             "<h2>Flagged pairs</h2><table><tr><th>score</th><th>submission</th><th>with</th><th>shared tokens</th>"
             f"<th></th></tr>{flagged}</table>"
+            f"<h2>Submissions that run code from data</h2><p>{len(analysis.marked)} marked (code run by exec, eval, "
+            "compile, marshal, pickle or a computed import, or Python code held encoded in a string; "
+            f"what could be decoded is compared like their own code).</p><ul>{marked}</ul>"
             "<h2>The class, highest similarity first</h2><table><tr><th>#</th><th>student</th><th>highest score</th>"
-            f"<th>with</th><th>file</th><th>note</th></tr>{''.join(rows)}</table>")
+            f"<th>with</th><th>file</th><th>note</th><th>runs code from data</th></tr>{''.join(rows)}</table>")
     return _page(f"{analysis.problem}: similarity", body)
 
 
@@ -136,10 +152,12 @@ def write_csv(analysis: Analysis, path: Path) -> None:
     """One row per compared pair, highest score first."""
     with open(path, "w", newline="") as f:
         w = csv.writer(f)
-        w.writerow(["score", "flagged", "a", "b", "b_kind", "share_a", "share_b", "shared_tokens", "a_file", "b_file"])
+        w.writerow(["score", "flagged", "a", "b", "b_kind", "share_a", "share_b", "shared_tokens", "a_file", "b_file",
+                    "a_marks", "b_marks"])
         for p in analysis.pairs:
             w.writerow([f"{p.score:.4f}", "yes" if p.flagged else "", csv_cell(p.a.name), csv_cell(p.b.name), p.b.kind,
-                        f"{p.share_a:.4f}", f"{p.share_b:.4f}", p.tokens, csv_cell(p.a.path), csv_cell(p.b.path)])
+                        f"{p.share_a:.4f}", f"{p.share_b:.4f}", p.tokens, csv_cell(p.a.path), csv_cell(p.b.path),
+                        csv_cell("; ".join(p.a.marks)), csv_cell("; ".join(p.b.marks))])
 
 
 def write_reports(analysis: Analysis, report_dir: Path) -> Path:
@@ -156,3 +174,12 @@ def write_reports(analysis: Analysis, report_dir: Path) -> Path:
     index = report_dir / "similarity.html"
     index.write_text(index_page(analysis, report_dir, pages))
     return index
+
+
+def run(problem: str, root: str | Path, report_dir: str | Path, references: list[str | Path] = (),
+        extra_boilerplate: list[str | Path] = (), threshold: float = THRESHOLD) -> Analysis:
+    """Analyse the class (:func:`grader.similarity.analyse`) and write ``report_dir/similarity.html``,
+    ``similarity.csv`` and one page per flagged pair under ``report_dir/similarity/``."""
+    analysis = analyse(problem, root, references, extra_boilerplate, threshold)
+    write_reports(analysis, Path(report_dir))
+    return analysis

@@ -18,7 +18,7 @@ import pytest
 
 from grader import similarity as sim
 from grader.report import report_name
-from grader.similarity_report import show_code
+from grader.similarity_report import run, show_code
 
 from .conftest import HERE, REPO
 
@@ -147,7 +147,7 @@ def test_everything_from_submissions_is_escaped(tmp_path):
     out.mkdir()
     (out / "students").mkdir()
     (out / "students" / report_name(evil)).write_text("grading report")  # as `grade --reports` names it
-    a = sim.run("delaunay", tmp_path / "class", out)
+    a = run("delaunay", tmp_path / "class", out)
     assert len(a.flagged) == 1
     text = (out / "similarity.html").read_text() + (out / "similarity" / "pair-1.html").read_text()
     assert "<script>" not in text and "<img" not in text and "\x1b" not in text
