@@ -121,12 +121,14 @@ def _runqueue_seconds(box: Sandbox, pid: int) -> float:
 
 def _peak_rss_mb(box: Sandbox, pid: int) -> float:
     """Peak memory since the last :func:`_reset_peak`: of the whole sandbox (cgroup) when it has
-    a group, else the peak RSS of process ``pid``."""
+    a group, else the peak RSS of process ``pid``; plus, where no cgroup charges them, the files
+    kept in the jail's tmpfs mounts (:meth:`Sandbox.sample_files`)."""
     if box.group is not None:
+        files = 0.0 if box.files_charged() else box.files.peak_mb()
         try:
-            return box.group.peak_memory_mb()
+            return box.group.peak_memory_mb() + files
         except (OSError, ValueError):
-            return 0.0
+            return files
     try:
         with open(f"/proc/{pid}/status", "rb") as f:
             for line in f:
@@ -138,6 +140,7 @@ def _peak_rss_mb(box: Sandbox, pid: int) -> float:
 
 
 def _reset_peak(box: Sandbox, pid: int) -> None:
+    box.files.reset()
     if box.group is not None:
         try:
             box.group.reset_peak()
@@ -392,6 +395,8 @@ def _error_outcome(err: object, time_s: float = 0.0, memory_mb: float = 0.0) -> 
     frames = err.get("where")
     where = tuple(clean(w, 300) for w in frames[:4] if isinstance(w, str)) if isinstance(frames, list) else ()
     status = "memory" if kind == "MemoryError" else "error"
+    if "[Errno 28]" in msg:  # ENOSPC: a tmpfs of the jail is full, and its files are memory
+        status, msg = "memory", f"a file system of the jail is full (files there count as memory): {msg}"
     return RunOutcome(status, message=msg, time_s=time_s, memory_mb=memory_mb, where=where)
 
 
@@ -475,6 +480,7 @@ class FunctionWorker:
         cpu_exceeded = idle_exceeded = False
         while True:
             reply = child.wait_reply(min(time.monotonic() + _sample_s(self.box), deadline), want="id")
+            self.box.sample_files(child.pid)
             if reply is not None:  # the reply to this call, a violation, or junk (see _Child)
                 break
             if child.exit_status is not None or time.monotonic() >= deadline:
@@ -505,6 +511,9 @@ class FunctionWorker:
             self.stop()
             return RunOutcome("memory", message="the submission's processes together went over the memory limit",
                               time_s=time_s, memory_mb=max(mem, float(self.box.limits.memory_mb)))
+        if self.box.files.full_message() and not (reply is not None and "violation" in reply):
+            self.stop()  # its files go with its jail
+            return RunOutcome("memory", message=self.box.files.full_message(), time_s=time_s, memory_mb=mem)
         if reply is not None and "violation" in reply:
             self.stop()
             return RunOutcome("violation", message=reply["violation"], time_s=time_s, memory_mb=mem)
@@ -582,6 +591,7 @@ def run_stdio(box: Sandbox, source: str, input_text: str, time_limit: float, for
     cpu_exceeded = junk = False
     while child.exit_status is None and time.monotonic() < deadline:
         reply = child.wait_reply(min(time.monotonic() + _sample_s(box), deadline), want="__never__")
+        box.sample_files(child.pid)
         if reply is not None and "violation" in reply:
             break
         if reply is not None and ("garbled" in reply or "output_limit" in reply):
@@ -625,6 +635,8 @@ def _stdio_outcome(box: Sandbox, child: _Child, time_limit: float, time_s: float
     if _memory_limit_hit(box):
         return RunOutcome("memory", message="the program's processes together went over the memory limit",
                           time_s=time_s, memory_mb=max(mem, float(box.limits.memory_mb)))
+    if box.files.full_message():
+        return RunOutcome("memory", message=box.files.full_message(), time_s=time_s, memory_mb=mem)
     if _output_overflow(box, [out_path, err_path]):
         return RunOutcome("output_limit", message=f"more than {box.limits.output_mb} MiB of output",
                           time_s=time_s, memory_mb=mem)
