@@ -7,6 +7,7 @@ One entry point: :class:`Sandbox` (with :class:`Limits`) starts jailed children;
 ``sandbox``               the jail: which kind (:func:`jail_kind`), uid slots, rlimits, cleanup
 ``mounts``                root's child side: staging for bubblewrap, the ``namespaces`` jail
 ``cgroups``               accounting of a whole sandbox: cgroup v1/v2, ``/proc`` sums
+``tmpfs``                 the writable ``/tmp`` and ``/dev/shm``: sizes within the memory limit, use
 ``seccomp``               the seccomp-BPF filter (denied calls; no new processes, not root)
 ``engines``               every installed copy of the forbidden packages and engines
 ``fontcache``             matplotlib's font cache, built outside the jail

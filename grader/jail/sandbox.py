@@ -11,12 +11,13 @@ whole on timeout, inside a kernel jail chosen by :func:`jail_kind`:
 
   - ``bwrap`` (Debian's bubblewrap, preferred): an allow-list by construction: a new root
     holding only ``/usr`` (and the ``/bin``, ``/lib*`` links), a few ``/etc`` files the dynamic
-    loader needs, the Python installations (read-only), a fresh ``/proc`` and minimal ``/dev``,
-    and a private size-limited ``/tmp`` with the working directory; new user, pid, network,
-    IPC, UTS and cgroup namespaces; dies with the grader;
+    loader needs, the Python installations (read-only), a fresh ``/proc`` and minimal ``/dev``
+    (read-only), a private sized ``/dev/shm`` and a private sized ``/tmp`` with the working
+    directory; new user, pid, network, IPC, UTS and cgroup namespaces; dies with the grader;
   - ``namespaces`` (fallback where bubblewrap is missing or cannot create a user namespace):
     a private mount namespace in which every top-level directory except the system ones and any
-    extra hidden path is covered by an empty, root-owned tmpfs (:mod:`grader.jail.mounts`);
+    extra hidden path is covered by an empty, root-owned tmpfs (:mod:`grader.jail.mounts`), with
+    a private sized ``/tmp`` and ``/dev/shm``;
 
 * **an ordinary user** (an instructor's account): the same ``bwrap`` allow-list jail, started
   by that user (bubblewrap needs only unprivileged user namespaces), with a seccomp filter that
@@ -28,6 +29,12 @@ whole on timeout, inside a kernel jail chosen by :func:`jail_kind`:
   refuses with :class:`JailUnavailable`, whose message names the fixes, unless the caller asked
   for the **trusted** mode (``trusted=True``, ``GRADER_TRUSTED=1``, ``judge --trusted``: a student
   checking their own code): rlimits and a temporary working directory only.
+
+In every jail the only writable mounts are ``/tmp`` and ``/dev/shm``: tmpfs (RAM) sized within the
+memory limit (:mod:`grader.jail.tmpfs`; bubblewrap's own root, its ``/dev`` and every covering
+tmpfs are remounted read-only). As root the cgroup charges their files; an ordinary account's
+RLIMIT_AS is the memory limit minus their sizes. What a submission keeps there is sampled
+(:meth:`Sandbox.sample_files`): a filled one is an MLE.
 
 In every jail all installed copies of the forbidden packages and engines
 (:func:`grader.jail.engines.cover_paths`) are covered and the paths in ``hide`` are hidden
