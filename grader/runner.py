@@ -330,6 +330,12 @@ class _Child:
             self.exit_status = self.box.decode_exit(os.waitstatus_to_exitcode(status))
             self.proc.returncode = self.exit_status
 
+    def release(self) -> None:
+        """Close ``ctl_in`` once everything was sent: a stdio child waits for that before it exits."""
+        if self.ctl_in >= 0 and not self.pending:
+            os.close(self.ctl_in)
+            self.ctl_in = -1
+
     def kill(self) -> None:
         """Kill the process group, reap the child, then sweep every process of the sandbox uid."""
         if self.exit_status is None:
@@ -590,8 +596,11 @@ def run_stdio(box: Sandbox, source: str, input_text: str, time_limit: float, for
     reply = None
     cpu_exceeded = junk = False
     while child.exit_status is None and time.monotonic() < deadline:
-        reply = child.wait_reply(min(time.monotonic() + _sample_s(box), deadline), want="__never__")
+        reply = child.wait_reply(min(time.monotonic() + _sample_s(box), deadline), want="exit")
         box.sample_files(child.pid)
+        if reply is not None and "exit" in reply:  # the program ended: its files are measured, it may go
+            child.release()
+            reply = None
         if reply is not None and "violation" in reply:
             break
         if reply is not None and ("garbled" in reply or "output_limit" in reply):

@@ -152,11 +152,13 @@ def test_messages_help_the_student(tiny_judge):
 
 def test_files_in_the_jail_count_as_memory(tiny_judge):
     """Issue "Hardening round 4", item 2: 300 MB of files (256 MB allowed) kept in /dev/shm or
-    /tmp is MLE saying where, with the files counted in the memory reported (as an ordinary
-    account bubblewrap's unsized /dev/shm held 3 GiB per test: WA, 17 MB reported); /dev and the
-    jail's root are read-only. Nothing is left on the host."""
+    /tmp is MLE saying where (a program too: it waits until they are measured), with the files
+    counted in the memory reported (as an ordinary account bubblewrap's unsized /dev/shm held
+    3 GiB per test: WA, 17 MB reported); /dev and the jail's root are read-only. Nothing is left
+    on the host."""
     limit = tiny_judge.problem.memory_mb
-    for name, where, size in (("files_in_dev_shm", "/dev/shm", 8), ("files_in_tmp", "/tmp", 32)):
+    for name, where, size in (("files_in_dev_shm", "/dev/shm", 8), ("files_in_tmp", "/tmp", 32),
+                              ("files_in_dev_shm_stdio", "/dev/shm", 8)):
         t = tiny_judge.judge_path(HERE / "hostile" / f"{name}.py").tests[0]
         assert t.verdict == "MLE" and f"kept {size} MB in {where}," in t.message, (t.verdict, t.message)
         assert size <= t.memory_mb <= limit, t.memory_mb
