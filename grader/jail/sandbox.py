@@ -389,10 +389,12 @@ class Sandbox:
         return a
 
     def address_space_mb(self) -> int:
-        """RLIMIT_AS of each process: the memory limit itself without a cgroup; with one (which
-        bounds the real memory, RSS, of the whole sandbox) the limit plus
-        :data:`ADDRESS_HEADROOM_MB`, since libraries map far more than they touch (numpy, scipy
-        and matplotlib together do not even load under a 256 MiB address space)."""
+        """RLIMIT_AS of each process: with a cgroup (which bounds the real memory, RSS and tmpfs
+        files, of the whole sandbox) the limit plus :data:`ADDRESS_HEADROOM_MB`, since libraries
+        map far more than they touch (numpy, scipy and matplotlib together do not even load under
+        a 256 MiB address space); without one, in a jail, the limit minus the sizes of its
+        writable tmpfs (:func:`tmpfs.sizes`: address space plus files stay within the limit);
+        without a jail the limit itself."""
         if self.files_charged():
             return self.limits.memory_mb + ADDRESS_HEADROOM_MB
         if self.kind in ("bwrap", "namespaces"):  # the files in its tmpfs mounts count too
