@@ -8,7 +8,7 @@ keyring calls, ``process_vm_*``, ``personality``, module loading, ``userfaultfd`
 Every other call is allowed, except, with ``program(no_processes=True)`` (the non-root jail,
 which has no cgroup to charge helpers to), new processes: ``fork``, ``vfork`` and ``clone``
 without ``CLONE_THREAD`` kill the process (``SIGSYS``, judged SV); threads still start; and
-``shmget`` gets ``EPERM`` (SysV shared memory is RAM outside RLIMIT_AS that no cgroup charges there).
+``shmget`` and ``memfd_create`` get ``EPERM`` (RAM outside RLIMIT_AS that no cgroup charges there).
 Only x86-64 is supported; elsewhere :func:`program` returns None
 and the sandbox reports "no seccomp".
 
@@ -61,8 +61,9 @@ DENIED_X86_64 = {
 }
 #: Also denied where nothing charges memory outside the process (an ordinary account's jail, no
 #: cgroup): SysV shared memory, whose segments outlive ``shmdt`` outside RLIMIT_AS (measured: 40
-#: segments of 8 MB kept 320 MB on the host for a 256 MB problem).
-ACCOUNT_DENIED_X86_64 = {"shmget": 29}
+#: segments of 8 MB kept 320 MB on the host for a 256 MB problem), and memfd files, RAM outside
+#: RLIMIT_AS up to RLIMIT_FSIZE each (64 open: 1 GB with a 16 MB output limit).
+ACCOUNT_DENIED_X86_64 = {"shmget": 29, "memfd_create": 319}
 _CLONE, _CLONE3, _FORK, _VFORK = 56, 435, 57, 58
 CLONE_THREAD = 0x00010000
 
