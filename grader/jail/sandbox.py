@@ -64,11 +64,12 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Sequence
 
-from . import cgroups, engines, seccomp, tmpfs
+from . import cgroups, engines, seccomp
 from .fontcache import matplotlib_fontlist
 from .mounts import CLONE_NEWNET, CLONE_NEWUSER, JAIL_WORKDIR, MPL_DIR, Plan, jail_filesystem, stage_for_bwrap, unshare
 from .paths import outermost, python_roots, under
 from .procs import alive, children, parent, uid_processes
+from . import tmpfs
 
 __all__ = ["Limits", "Sandbox", "JailUnavailable", "jail_kind", "mechanism", "is_root", "bwrap_path", "python_roots",
            "uid_processes", "refusal_message", "refuses_processes", "require_jail", "JAIL_ENV", "TRUSTED_ENV", "LOCK_DIR", "JAIL_WORKDIR", "UID_BASE"]
