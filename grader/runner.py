@@ -594,10 +594,12 @@ def run_stdio(box: Sandbox, source: str, input_text: str, time_limit: float, for
     waited = 0.0  # run-queue wait of the new process, as last seen while it was alive
     deadline = wall0 + wall_limit_for(time_limit)
     reply = None
+    peak = 0.0
     cpu_exceeded = junk = False
     while child.exit_status is None and time.monotonic() < deadline:
         reply = child.wait_reply(min(time.monotonic() + _sample_s(box), deadline), want="exit")
         box.sample_files(child.pid)
+        peak = max(peak, _peak_rss_mb(box, child.pid)) if box.group is not None else 0.0  # a tree is sampled
         if reply is not None and "exit" in reply:  # the program ended: its files are measured, it may go
             child.release()
             reply = None
@@ -624,8 +626,9 @@ def run_stdio(box: Sandbox, source: str, input_text: str, time_limit: float, for
     ru = child.rusage
     cpu = (ru.ru_utime + ru.ru_stime) if ru is not None else 0.0
     mem = (ru.ru_maxrss / 1024) if ru is not None else 0.0
-    if box.group is not None:  # the whole sandbox, forked helpers included
-        cpu, mem = max(cpu, _cpu_seconds(box, 0) - cpu0), max(mem, _peak_rss_mb(box, 0))
+    if box.group is not None:  # the whole sandbox, forked helpers included; not ru_maxrss: it keeps the
+        # RSS of the grader forked before exec (measured: 249 MB reported for a program of 17 MB)
+        cpu, mem = max(cpu, _cpu_seconds(box, 0) - cpu0), max(peak, _peak_rss_mb(box, 0))
     time_s = round(cpu, 4)
     outcome = _stdio_outcome(box, child, time_limit, time_s, mem, timed_out, junk, out_path, err_path)
     outcome.idle_s = max(0.0, wall - cpu - waited)

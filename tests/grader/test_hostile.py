@@ -166,3 +166,14 @@ def test_files_in_the_jail_count_as_memory(tiny_judge):
     assert t.verdict == "RE" and "not writable: /dev/hog-: errno" in t.message, (t.verdict, t.message)
     assert t.memory_mb < limit
     assert not [p for d in ("/dev/shm", "/tmp", "/") for p in Path(d).glob("hog-*")]
+
+
+def test_a_program_is_not_charged_the_graders_memory(tiny_judge, tmp_path):
+    """A program's (stdio) memory is its sandbox's: ``ru_maxrss`` of the process the grader starts
+    keeps the grader's own RSS from before ``exec`` (after compiling numba, 249 MB was reported for
+    files_in_dev_shm_stdio, a program of 17 MB)."""
+    ballast = b"\x01" * (200 << 20)  # the grader holds 200 MB when it forks
+    sub = tmp_path / "echo.py"
+    sub.write_text("import sys\nsys.stdin.read()\nprint(0)\n")
+    t = tiny_judge.judge_path(sub).tests[0]
+    assert len(ballast) and 0 < t.memory_mb < 100, t.memory_mb
