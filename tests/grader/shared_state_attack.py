@@ -100,6 +100,23 @@ def _prepare(folder: str, kind: str, ready: int, release: int) -> None:
     os._exit(0)
 
 
+def _fresh_tmp() -> None:
+    """A fresh tmpfs on this namespace's ``/tmp``, with the checkout and the venv still where they were
+    when they live under ``/tmp`` (a clone in ``/tmp``, as CI may make): the host's ``/tmp`` is first
+    bound on ``/var/tmp`` (in this namespace only), then each such path is bound back in place."""
+    from grader.jail.mounts import MS_BIND, MS_REC, mount
+    from grader.jail.paths import under
+
+    keep = sorted({p for p in (str(REPO), os.path.realpath(sys.prefix), os.path.realpath(sys.base_prefix))
+                   if under(p, "/tmp")})
+    if keep:
+        mount("/tmp", "/var/tmp", None, MS_BIND | MS_REC)
+    mount("tmpfs", "/tmp", "tmpfs", 0, "mode=1777,size=256m")
+    for path in keep:
+        os.makedirs(path, exist_ok=True)
+        mount(os.path.join("/var/tmp", os.path.relpath(path, "/tmp")), path, None, MS_BIND | MS_REC)
+
+
 def run(scenario: str, timeout: float = 300) -> dict:
     """Play ``scenario`` (this process enters a new mount namespace: call it in a child)."""
     from grader.jail.mounts import CLONE_NEWNS, MS_PRIVATE, MS_REC, mount, unshare
@@ -108,7 +125,7 @@ def run(scenario: str, timeout: float = 300) -> dict:
     if not unshare(CLONE_NEWNS):
         raise OSError("unshare(CLONE_NEWNS) failed")
     mount(None, "/", None, MS_REC | MS_PRIVATE)
-    mount("tmpfs", "/tmp", "tmpfs", 0, "mode=1777,size=256m")
+    _fresh_tmp()
     mount("tmpfs", "/run", "tmpfs", 0, f"mode={run_mode},size=16m")
     os.mkdir(VICTIM, 0o755)
     ready_r, ready_w = os.pipe()
