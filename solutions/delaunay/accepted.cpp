@@ -207,6 +207,22 @@ inline int cmp_dist2(double ax, double ay, double bx, double by, double cx, doub
     return sign(sub(add(mul(p, p), mul(q, q)), add(mul(s, s), mul(t, t))));
 }
 
+// sign of (a - c) . (b - c) (exact): > 0 when the angle a-c-b is acute, i.e. c lies strictly
+// outside the closed disc with diameter ab; <= 0 when c lies in that closed disc
+inline int dot2(double ax, double ay, double bx, double by, double cx, double cy) {
+    double acx = ax - cx, bcx = bx - cx, acy = ay - cy, bcy = by - cy;
+    if (safe(acx) && safe(bcx) && safe(acy) && safe(bcy)) {
+        double l = acx * bcx, r = acy * bcy, det = l + r;
+        double bound = CCW_BOUND * (std::fabs(l) + std::fabs(r));
+        if (det > bound) return 1;
+        if (-det > bound) return -1;
+        if (l == 0 && r == 0) return 0;
+    }
+    const double v[6] = {ax, ay, bx, by, cx, cy};
+    std::vector<Big> B = to_big(v, 6);
+    return sign(add(mul(sub(B[0], B[4]), sub(B[2], B[4])), mul(sub(B[1], B[5]), sub(B[3], B[5]))));
+}
+
 }  // namespace exact
 // END PREDICATES
 
