@@ -219,7 +219,8 @@ def bench_problem(problem_id: str, cap_s: float, quick: bool) -> list[SolutionRe
         compiled = []
         for src in sources:
             c = compile_cpp(src, Path(tmp))
-            status = "ok" if c.binary else "failed: " + c.message.splitlines()[0][:100] if c.message else "failed"
+            errors = [line for line in c.message.splitlines() if "error" in line] or c.message.splitlines() or [""]
+            status = "ok" if c.binary else "failed: " + errors[0].split("error: ", 1)[-1][:100]
             print(f"compile {src.name:<22} {c.seconds:6.2f} s  {status}", flush=True)
             compiled.append(c)
         for c in compiled:
