@@ -110,3 +110,11 @@ def test_bench_cpp_solutions_quick(tmp_path):
     assert "degenerate" in data["wrong_double.cpp"]["groups_failed"]
     assert "large" in data["quadratic.cpp"]["groups_failed"]
     assert run.stdout.rstrip().endswith("every verdict as expected")
+
+
+def test_cpp_predicates_in_sync():
+    """Every C++ solution's copy of the predicates is the master copy (solutions/cpp/predicates.hpp)."""
+    run = subprocess.run([sys.executable, "solutions/cpp/sync_predicates.py", "--check"], cwd=ROOT,
+                         capture_output=True, text=True, timeout=60)
+    assert run.returncode == 0, run.stdout + run.stderr
+    assert "all match" in run.stdout
