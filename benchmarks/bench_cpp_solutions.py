@@ -20,15 +20,24 @@ Run (from the checkout, with the course's venv):
     options: --cap SECONDS (per-test CPU cap, default 1.0), --json OUT (the rows as JSON),
     --quick (no Python comparison, and a group's remaining tests are skipped once it fails)
 
-Example output (load average 6 on 2 cores):
-    == delaunay: 200 tests, cap 1.0 s CPU per test; Python accepted_walk.py: AC, slowest test 0.61 s
-    compile accepted.cpp       1.93 s  ok
-    ...
-    solution            verdict  expected     groups passed / failed                        slowest   python   ok
-    accepted.cpp        AC       AC           6/6 -                                         0.031 s   0.61 s   yes
-    wrong_double.cpp    WA       WA degenerate 5/6 degenerate                                0.030 s   0.61 s   yes
-    quadratic.cpp       TLE      TLE large    5/6 large                                     >1.0 s    0.61 s   yes
-    compile_error.cpp   CE       CE           0/6 (does not compile)                        -         0.61 s   yes
+Example output (`--problems delaunay`, 2026-12-05, load average 4-6 on 2 cores; the compile lines
+from a `--quick` run just after, once the compiler's message was shortened to its first error):
+    compiler: /usr/bin/g++ -std=gnu++17 -O2 -pipe -static -s
+    g++ (Debian 12.2.0-14+deb12u1) 12.2.0
+    == delaunay: 200 tests in 6 groups, cap 1 s CPU per test; Python accepted_walk.py: AC, slowest test 1.26 s
+    compile accepted.cpp             3.87 s  ok
+    compile compile_error.cpp        2.33 s  failed: 'orient2d' was not declared in this scope; did you mean ...
+    compile quadratic.cpp            3.91 s  ok
+    compile wrong_double.cpp         3.40 s  ok
+    solution               verdict  expected         groups passed / failed               slowest   python  ok
+    accepted.cpp           AC       AC               6/6 -                                0.058 s   1.26 s  yes
+    compile_error.cpp      CE       CE               0/6 (does not compile)                     -   1.26 s  yes
+    quadratic.cpp          TLE      TLE large        5/6 large                               >1 s   1.26 s  yes
+        first failure: large/01: TLE after 2.98 s CPU
+    wrong_double.cpp       WA       WA degenerate    5/6 degenerate                          >1 s   1.26 s  yes
+        first failure: degenerate/03: edge 42-63 is not Delaunay: point 17 is strictly inside the circumcircle ...
+
+    4 C++ solutions on 1 problems: every verdict as expected
 """
 from __future__ import annotations
 
@@ -219,7 +228,7 @@ def bench_problem(problem_id: str, cap_s: float, quick: bool) -> list[SolutionRe
         compiled = []
         for src in sources:
             c = compile_cpp(src, Path(tmp))
-            errors = [line for line in c.message.splitlines() if "error" in line] or c.message.splitlines() or [""]
+            errors = [line for line in c.message.splitlines() if "error: " in line] or c.message.splitlines() or [""]
             status = "ok" if c.binary else "failed: " + errors[0].split("error: ", 1)[-1][:100]
             print(f"compile {src.name:<22} {c.seconds:6.2f} s  {status}", flush=True)
             compiled.append(c)
