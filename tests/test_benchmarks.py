@@ -1,6 +1,7 @@
 """The benchmark scripts stay runnable: every script under benchmarks/ compiles, the Delaunay
 benchmark prints its table on small sizes, and the judge-overhead benchmark prints its tables for
-two problems whose numbers add up (timings are printed, never asserted).
+two problems whose numbers add up, and the C++ solutions' benchmark proves their verdicts on one
+problem (timings are printed, never asserted).
 
 Run: .venv/bin/python -m pytest tests/test_benchmarks.py -q
 """
@@ -9,11 +10,13 @@ from __future__ import annotations
 import json
 import math
 import py_compile
+import shutil
 import subprocess
 import sys
 from pathlib import Path
 
 import pytest
+import yaml
 
 ROOT = Path(__file__).resolve().parents[1]
 SCRIPTS = sorted((ROOT / "benchmarks").glob("*.py"))
@@ -77,3 +80,41 @@ def test_bench_judge_overhead_quick(tmp_path):
         assert math.isclose(b["overhead"], students[1]["overhead"], abs_tol=1e-9)  # students 2..n: here s2 alone
         assert r["extra"]["replay"]["tests"] == students[0]["tests"] and r["extra"]["replay"]["rejected"] == 0
     assert data["per_test_fixed"] * 29 + data["per_submission_fixed"] > 0
+
+
+@pytest.mark.skipif(shutil.which("g++") is None, reason="needs g++ (Debian's g++ 12)")
+def test_bench_cpp_solutions_quick(tmp_path):
+    """Quick mode on delaunay: every C++ solution compiled once and checked by the problem's checker;
+    the table's shape and the expected verdicts (expected_cpp.yaml), never its timings."""
+    out = tmp_path / "cpp.json"
+    run = subprocess.run([sys.executable, "benchmarks/bench_cpp_solutions.py", "--problems", "delaunay", "--quick",
+                          "--json", str(out)],
+                         cwd=ROOT, capture_output=True, text=True, timeout=900)
+    assert run.returncode == 0, run.stdout[-3000:] + run.stderr[-3000:]
+    assert run.stdout.startswith("compiler: "), run.stdout
+    assert "== delaunay:" in run.stdout
+    expected = yaml.safe_load((ROOT / "solutions/delaunay/expected_cpp.yaml").read_text())
+    sources = sorted(p.name for p in (ROOT / "solutions/delaunay").glob("*.cpp"))
+    assert sorted(expected) == sources
+    compiled = [line.split()[1] for line in run.stdout.splitlines() if line.startswith("compile ")]
+    assert sorted(compiled) == sources  # each file compiled once
+    rows = {line.split()[0]: line.split() for line in run.stdout.splitlines() if line.split()[:1] in ([s] for s in sources)}
+    assert sorted(rows) == sources, run.stdout
+    for name, want in expected.items():
+        verdict, *groups = str(want).split()
+        row = rows[name]
+        assert row[1] == verdict and row[-1] == "yes", row
+    data = {r["file"]: r for r in json.loads(out.read_text())}
+    assert data["accepted.cpp"]["verdict"] == "AC" and data["accepted.cpp"]["groups_failed"] == []
+    assert data["compile_error.cpp"]["verdict"] == "CE"
+    assert "degenerate" in data["wrong_double.cpp"]["groups_failed"]
+    assert "large" in data["quadratic.cpp"]["groups_failed"]
+    assert run.stdout.rstrip().endswith("every verdict as expected")
+
+
+def test_cpp_predicates_in_sync():
+    """Every C++ solution's copy of the predicates is the master copy (solutions/cpp/predicates.hpp)."""
+    run = subprocess.run([sys.executable, "solutions/cpp/sync_predicates.py", "--check"], cwd=ROOT,
+                         capture_output=True, text=True, timeout=60)
+    assert run.returncode == 0, run.stdout + run.stderr
+    assert "all match" in run.stdout

@@ -1,0 +1,228 @@
+// Master copy of the exact geometric predicates shared by the C++ reference solutions
+// (solutions/<id>/*.cpp). Each submission must be one file, so the block between the markers is
+// copied into every .cpp by solutions/cpp/sync_predicates.py (`--check` fails when a copy differs).
+//
+// BEGIN PREDICATES
+// ---- exact predicates: a floating-point filter with Shewchuk's error bounds, else exact ----
+// The filter is trusted only when every coordinate difference d is 0 or 1e-60 <= |d| <= 1e60:
+// then no product of up to four differences underflows or overflows, every rounding is relative
+// and the bound holds. Otherwise (coordinates near 1e-300 or 1e300) the sign is computed exactly:
+// each double is an integer mantissa times a power of two, shifted onto the smallest exponent of
+// the predicate's inputs, and the determinant is evaluated on a small big-integer type.
+#include <bits/stdc++.h>
+
+namespace exact {
+
+struct Big {  // sign-magnitude integer, 32-bit limbs, little-endian
+    bool neg = false;
+    std::vector<uint32_t> d;
+    bool zero() const { return d.empty(); }
+    void trim() {
+        while (!d.empty() && d.back() == 0) d.pop_back();
+        if (d.empty()) neg = false;
+    }
+};
+
+inline int cmp_mag(const Big& a, const Big& b) {
+    if (a.d.size() != b.d.size()) return a.d.size() < b.d.size() ? -1 : 1;
+    for (size_t i = a.d.size(); i-- > 0;)
+        if (a.d[i] != b.d[i]) return a.d[i] < b.d[i] ? -1 : 1;
+    return 0;
+}
+
+inline Big add(const Big& a, const Big& b) {
+    Big r;
+    if (a.neg == b.neg) {
+        r.neg = a.neg;
+        size_t n = std::max(a.d.size(), b.d.size());
+        r.d.resize(n + 1);
+        uint64_t carry = 0;
+        for (size_t i = 0; i < n; ++i) {
+            uint64_t s = carry + (i < a.d.size() ? a.d[i] : 0) + (i < b.d.size() ? b.d[i] : 0);
+            r.d[i] = (uint32_t)s;
+            carry = s >> 32;
+        }
+        r.d[n] = (uint32_t)carry;
+    } else {
+        int c = cmp_mag(a, b);
+        if (c == 0) return r;
+        const Big& big = c > 0 ? a : b;
+        const Big& small = c > 0 ? b : a;
+        r.neg = big.neg;
+        r.d.resize(big.d.size());
+        int64_t borrow = 0;
+        for (size_t i = 0; i < big.d.size(); ++i) {
+            int64_t s = (int64_t)big.d[i] - borrow - (i < small.d.size() ? small.d[i] : 0);
+            borrow = s < 0;
+            r.d[i] = (uint32_t)(s + (borrow << 32));
+        }
+    }
+    r.trim();
+    return r;
+}
+
+inline Big neg(Big a) {
+    if (!a.zero()) a.neg = !a.neg;
+    return a;
+}
+inline Big sub(const Big& a, const Big& b) { return add(a, neg(b)); }
+
+inline Big mul(const Big& a, const Big& b) {
+    Big r;
+    if (a.zero() || b.zero()) return r;
+    r.neg = a.neg != b.neg;
+    r.d.assign(a.d.size() + b.d.size(), 0);
+    for (size_t i = 0; i < a.d.size(); ++i) {
+        uint64_t carry = 0;
+        for (size_t j = 0; j < b.d.size(); ++j) {
+            uint64_t cur = (uint64_t)a.d[i] * b.d[j] + r.d[i + j] + carry;
+            r.d[i + j] = (uint32_t)cur;
+            carry = cur >> 32;
+        }
+        size_t k = i + b.d.size();
+        while (carry) {
+            uint64_t cur = (uint64_t)r.d[k] + carry;
+            r.d[k++] = (uint32_t)cur;
+            carry = cur >> 32;
+        }
+    }
+    r.trim();
+    return r;
+}
+
+inline int sign(const Big& a) { return a.zero() ? 0 : (a.neg ? -1 : 1); }
+
+// v = m * 2^e exactly, with m an integer of at most 53 bits (m = 0 for v = 0)
+inline void split(double v, int64_t& m, int& e) {
+    if (v == 0) { m = 0; e = INT_MAX; return; }
+    int ex;
+    double f = std::frexp(v, &ex);          // v = f * 2^ex, 0.5 <= |f| < 1
+    m = (int64_t)std::ldexp(f, 53);         // exact
+    e = ex - 53;
+}
+
+// The doubles vs[0..k) as big integers on the common exponent min(e): vs[i] = out[i] * 2^emin.
+inline std::vector<Big> to_big(const double* vs, int k) {
+    std::vector<int64_t> m(k);
+    std::vector<int> e(k);
+    int emin = INT_MAX;
+    for (int i = 0; i < k; ++i) {
+        split(vs[i], m[i], e[i]);
+        if (m[i] != 0) emin = std::min(emin, e[i]);
+    }
+    std::vector<Big> out(k);
+    for (int i = 0; i < k; ++i) {
+        if (m[i] == 0) continue;
+        Big& b = out[i];
+        b.neg = m[i] < 0;
+        uint64_t mag = (uint64_t)(m[i] < 0 ? -m[i] : m[i]);
+        int sh = e[i] - emin;
+        b.d.assign(sh / 32 + 3, 0);
+        int limb = sh / 32, bit = sh % 32;
+        unsigned __int128 x = (unsigned __int128)mag << bit;  // at most 53 + 31 bits
+        for (int j = 0; j < 3; ++j) b.d[limb + j] = (uint32_t)(x >> (32 * j));
+        b.trim();
+        b.neg = m[i] < 0;
+    }
+    return out;
+}
+
+inline bool safe(double d) {  // a difference the filter may use
+    double a = std::fabs(d);
+    return a == 0 || (a >= 1e-60 && a <= 1e60);
+}
+
+const double EPS = 1.1102230246251565e-16;  // 2^-53
+const double CCW_BOUND = (3.0 + 16.0 * EPS) * EPS;
+const double ICC_BOUND = (10.0 + 96.0 * EPS) * EPS;
+
+inline int orient2d_exact(double ax, double ay, double bx, double by, double cx, double cy) {
+    const double v[6] = {ax, ay, bx, by, cx, cy};
+    std::vector<Big> B = to_big(v, 6);
+    Big l = mul(sub(B[2], B[0]), sub(B[5], B[1]));
+    Big r = mul(sub(B[3], B[1]), sub(B[4], B[0]));
+    return sign(sub(l, r));
+}
+
+// > 0 when a, b, c turn counter-clockwise, < 0 clockwise, 0 collinear (exact)
+inline int orient2d(double ax, double ay, double bx, double by, double cx, double cy) {
+    double acx = ax - cx, bcx = bx - cx, acy = ay - cy, bcy = by - cy;
+    if (safe(acx) && safe(bcx) && safe(acy) && safe(bcy)) {
+        double l = acx * bcy, r = acy * bcx, det = l - r;
+        double bound = CCW_BOUND * (std::fabs(l) + std::fabs(r));
+        if (det > bound) return 1;
+        if (-det > bound) return -1;
+        if (l == 0 && r == 0) return 0;
+    }
+    return orient2d_exact(ax, ay, bx, by, cx, cy);
+}
+
+inline int incircle_exact(double ax, double ay, double bx, double by, double cx, double cy, double dx,
+                          double dy) {
+    const double v[8] = {ax, ay, bx, by, cx, cy, dx, dy};
+    std::vector<Big> B = to_big(v, 8);
+    Big adx = sub(B[0], B[6]), ady = sub(B[1], B[7]);
+    Big bdx = sub(B[2], B[6]), bdy = sub(B[3], B[7]);
+    Big cdx = sub(B[4], B[6]), cdy = sub(B[5], B[7]);
+    Big alift = add(mul(adx, adx), mul(ady, ady));
+    Big blift = add(mul(bdx, bdx), mul(bdy, bdy));
+    Big clift = add(mul(cdx, cdx), mul(cdy, cdy));
+    Big t1 = mul(alift, sub(mul(bdx, cdy), mul(cdx, bdy)));
+    Big t2 = mul(blift, sub(mul(cdx, ady), mul(adx, cdy)));
+    Big t3 = mul(clift, sub(mul(adx, bdy), mul(bdx, ady)));
+    return sign(add(add(t1, t2), t3));
+}
+
+// > 0 when d lies strictly inside the circle through a, b, c (counter-clockwise), 0 on it (exact)
+inline int incircle(double ax, double ay, double bx, double by, double cx, double cy, double dx, double dy) {
+    double adx = ax - dx, bdx = bx - dx, cdx = cx - dx;
+    double ady = ay - dy, bdy = by - dy, cdy = cy - dy;
+    if (safe(adx) && safe(bdx) && safe(cdx) && safe(ady) && safe(bdy) && safe(cdy)) {
+        double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy, alift = adx * adx + ady * ady;
+        double cdxady = cdx * ady, adxcdy = adx * cdy, blift = bdx * bdx + bdy * bdy;
+        double adxbdy = adx * bdy, bdxady = bdx * ady, clift = cdx * cdx + cdy * cdy;
+        double det = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
+        double perm = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * alift +
+                      (std::fabs(cdxady) + std::fabs(adxcdy)) * blift +
+                      (std::fabs(adxbdy) + std::fabs(bdxady)) * clift;
+        double bound = ICC_BOUND * perm;
+        if (det > bound) return 1;
+        if (-det > bound) return -1;
+        if (perm == 0) return 0;
+    }
+    return incircle_exact(ax, ay, bx, by, cx, cy, dx, dy);
+}
+
+// sign of |a - b|^2 - |c - d|^2 (exact): compares two squared distances
+inline int cmp_dist2(double ax, double ay, double bx, double by, double cx, double cy, double dx, double dy) {
+    double x1 = ax - bx, y1 = ay - by, x2 = cx - dx, y2 = cy - dy;
+    if (safe(x1) && safe(y1) && safe(x2) && safe(y2)) {
+        double l = x1 * x1 + y1 * y1, r = x2 * x2 + y2 * y2, det = l - r;
+        double bound = 4.0 * EPS * (l + r);  // each of l, r has relative error <= 2 eps (1 + eps)
+        if (det > bound) return 1;
+        if (-det > bound) return -1;
+    }
+    const double v[8] = {ax, ay, bx, by, cx, cy, dx, dy};
+    std::vector<Big> B = to_big(v, 8);
+    Big p = sub(B[0], B[2]), q = sub(B[1], B[3]), s = sub(B[4], B[6]), t = sub(B[5], B[7]);
+    return sign(sub(add(mul(p, p), mul(q, q)), add(mul(s, s), mul(t, t))));
+}
+
+// sign of (a - c) . (b - c) (exact): > 0 when the angle a-c-b is acute, i.e. c lies strictly
+// outside the closed disc with diameter ab; <= 0 when c lies in that closed disc
+inline int dot2(double ax, double ay, double bx, double by, double cx, double cy) {
+    double acx = ax - cx, bcx = bx - cx, acy = ay - cy, bcy = by - cy;
+    if (safe(acx) && safe(bcx) && safe(acy) && safe(bcy)) {
+        double l = acx * bcx, r = acy * bcy, det = l + r;
+        double bound = CCW_BOUND * (std::fabs(l) + std::fabs(r));
+        if (det > bound) return 1;
+        if (-det > bound) return -1;
+        if (l == 0 && r == 0) return 0;
+    }
+    const double v[6] = {ax, ay, bx, by, cx, cy};
+    std::vector<Big> B = to_big(v, 6);
+    return sign(add(mul(sub(B[0], B[4]), sub(B[2], B[4])), mul(sub(B[1], B[5]), sub(B[3], B[5]))));
+}
+
+}  // namespace exact
+// END PREDICATES

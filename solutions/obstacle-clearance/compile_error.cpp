@@ -1,0 +1,531 @@
+// Obstacle clearance, C++17 stdio: does NOT compile (problem obstacle-clearance). A realistic slip:
+// a structured binding over the edge tuples names two variables for three elements.
+// Expected verdict: CE (solutions/obstacle-clearance/expected_cpp.yaml).
+// BEGIN PREDICATES
+// ---- exact predicates: a floating-point filter with Shewchuk's error bounds, else exact ----
+// The filter is trusted only when every coordinate difference d is 0 or 1e-60 <= |d| <= 1e60:
+// then no product of up to four differences underflows or overflows, every rounding is relative
+// and the bound holds. Otherwise (coordinates near 1e-300 or 1e300) the sign is computed exactly:
+// each double is an integer mantissa times a power of two, shifted onto the smallest exponent of
+// the predicate's inputs, and the determinant is evaluated on a small big-integer type.
+#include <bits/stdc++.h>
+
+namespace exact {
+
+struct Big {  // sign-magnitude integer, 32-bit limbs, little-endian
+    bool neg = false;
+    std::vector<uint32_t> d;
+    bool zero() const { return d.empty(); }
+    void trim() {
+        while (!d.empty() && d.back() == 0) d.pop_back();
+        if (d.empty()) neg = false;
+    }
+};
+
+inline int cmp_mag(const Big& a, const Big& b) {
+    if (a.d.size() != b.d.size()) return a.d.size() < b.d.size() ? -1 : 1;
+    for (size_t i = a.d.size(); i-- > 0;)
+        if (a.d[i] != b.d[i]) return a.d[i] < b.d[i] ? -1 : 1;
+    return 0;
+}
+
+inline Big add(const Big& a, const Big& b) {
+    Big r;
+    if (a.neg == b.neg) {
+        r.neg = a.neg;
+        size_t n = std::max(a.d.size(), b.d.size());
+        r.d.resize(n + 1);
+        uint64_t carry = 0;
+        for (size_t i = 0; i < n; ++i) {
+            uint64_t s = carry + (i < a.d.size() ? a.d[i] : 0) + (i < b.d.size() ? b.d[i] : 0);
+            r.d[i] = (uint32_t)s;
+            carry = s >> 32;
+        }
+        r.d[n] = (uint32_t)carry;
+    } else {
+        int c = cmp_mag(a, b);
+        if (c == 0) return r;
+        const Big& big = c > 0 ? a : b;
+        const Big& small = c > 0 ? b : a;
+        r.neg = big.neg;
+        r.d.resize(big.d.size());
+        int64_t borrow = 0;
+        for (size_t i = 0; i < big.d.size(); ++i) {
+            int64_t s = (int64_t)big.d[i] - borrow - (i < small.d.size() ? small.d[i] : 0);
+            borrow = s < 0;
+            r.d[i] = (uint32_t)(s + (borrow << 32));
+        }
+    }
+    r.trim();
+    return r;
+}
+
+inline Big neg(Big a) {
+    if (!a.zero()) a.neg = !a.neg;
+    return a;
+}
+inline Big sub(const Big& a, const Big& b) { return add(a, neg(b)); }
+
+inline Big mul(const Big& a, const Big& b) {
+    Big r;
+    if (a.zero() || b.zero()) return r;
+    r.neg = a.neg != b.neg;
+    r.d.assign(a.d.size() + b.d.size(), 0);
+    for (size_t i = 0; i < a.d.size(); ++i) {
+        uint64_t carry = 0;
+        for (size_t j = 0; j < b.d.size(); ++j) {
+            uint64_t cur = (uint64_t)a.d[i] * b.d[j] + r.d[i + j] + carry;
+            r.d[i + j] = (uint32_t)cur;
+            carry = cur >> 32;
+        }
+        size_t k = i + b.d.size();
+        while (carry) {
+            uint64_t cur = (uint64_t)r.d[k] + carry;
+            r.d[k++] = (uint32_t)cur;
+            carry = cur >> 32;
+        }
+    }
+    r.trim();
+    return r;
+}
+
+inline int sign(const Big& a) { return a.zero() ? 0 : (a.neg ? -1 : 1); }
+
+// v = m * 2^e exactly, with m an integer of at most 53 bits (m = 0 for v = 0)
+inline void split(double v, int64_t& m, int& e) {
+    if (v == 0) { m = 0; e = INT_MAX; return; }
+    int ex;
+    double f = std::frexp(v, &ex);          // v = f * 2^ex, 0.5 <= |f| < 1
+    m = (int64_t)std::ldexp(f, 53);         // exact
+    e = ex - 53;
+}
+
+// The doubles vs[0..k) as big integers on the common exponent min(e): vs[i] = out[i] * 2^emin.
+inline std::vector<Big> to_big(const double* vs, int k) {
+    std::vector<int64_t> m(k);
+    std::vector<int> e(k);
+    int emin = INT_MAX;
+    for (int i = 0; i < k; ++i) {
+        split(vs[i], m[i], e[i]);
+        if (m[i] != 0) emin = std::min(emin, e[i]);
+    }
+    std::vector<Big> out(k);
+    for (int i = 0; i < k; ++i) {
+        if (m[i] == 0) continue;
+        Big& b = out[i];
+        b.neg = m[i] < 0;
+        uint64_t mag = (uint64_t)(m[i] < 0 ? -m[i] : m[i]);
+        int sh = e[i] - emin;
+        b.d.assign(sh / 32 + 3, 0);
+        int limb = sh / 32, bit = sh % 32;
+        unsigned __int128 x = (unsigned __int128)mag << bit;  // at most 53 + 31 bits
+        for (int j = 0; j < 3; ++j) b.d[limb + j] = (uint32_t)(x >> (32 * j));
+        b.trim();
+        b.neg = m[i] < 0;
+    }
+    return out;
+}
+
+inline bool safe(double d) {  // a difference the filter may use
+    double a = std::fabs(d);
+    return a == 0 || (a >= 1e-60 && a <= 1e60);
+}
+
+const double EPS = 1.1102230246251565e-16;  // 2^-53
+const double CCW_BOUND = (3.0 + 16.0 * EPS) * EPS;
+const double ICC_BOUND = (10.0 + 96.0 * EPS) * EPS;
+
+inline int orient2d_exact(double ax, double ay, double bx, double by, double cx, double cy) {
+    const double v[6] = {ax, ay, bx, by, cx, cy};
+    std::vector<Big> B = to_big(v, 6);
+    Big l = mul(sub(B[2], B[0]), sub(B[5], B[1]));
+    Big r = mul(sub(B[3], B[1]), sub(B[4], B[0]));
+    return sign(sub(l, r));
+}
+
+// > 0 when a, b, c turn counter-clockwise, < 0 clockwise, 0 collinear (exact)
+inline int orient2d(double ax, double ay, double bx, double by, double cx, double cy) {
+    double acx = ax - cx, bcx = bx - cx, acy = ay - cy, bcy = by - cy;
+    if (safe(acx) && safe(bcx) && safe(acy) && safe(bcy)) {
+        double l = acx * bcy, r = acy * bcx, det = l - r;
+        double bound = CCW_BOUND * (std::fabs(l) + std::fabs(r));
+        if (det > bound) return 1;
+        if (-det > bound) return -1;
+        if (l == 0 && r == 0) return 0;
+    }
+    return orient2d_exact(ax, ay, bx, by, cx, cy);
+}
+
+inline int incircle_exact(double ax, double ay, double bx, double by, double cx, double cy, double dx,
+                          double dy) {
+    const double v[8] = {ax, ay, bx, by, cx, cy, dx, dy};
+    std::vector<Big> B = to_big(v, 8);
+    Big adx = sub(B[0], B[6]), ady = sub(B[1], B[7]);
+    Big bdx = sub(B[2], B[6]), bdy = sub(B[3], B[7]);
+    Big cdx = sub(B[4], B[6]), cdy = sub(B[5], B[7]);
+    Big alift = add(mul(adx, adx), mul(ady, ady));
+    Big blift = add(mul(bdx, bdx), mul(bdy, bdy));
+    Big clift = add(mul(cdx, cdx), mul(cdy, cdy));
+    Big t1 = mul(alift, sub(mul(bdx, cdy), mul(cdx, bdy)));
+    Big t2 = mul(blift, sub(mul(cdx, ady), mul(adx, cdy)));
+    Big t3 = mul(clift, sub(mul(adx, bdy), mul(bdx, ady)));
+    return sign(add(add(t1, t2), t3));
+}
+
+// > 0 when d lies strictly inside the circle through a, b, c (counter-clockwise), 0 on it (exact)
+inline int incircle(double ax, double ay, double bx, double by, double cx, double cy, double dx, double dy) {
+    double adx = ax - dx, bdx = bx - dx, cdx = cx - dx;
+    double ady = ay - dy, bdy = by - dy, cdy = cy - dy;
+    if (safe(adx) && safe(bdx) && safe(cdx) && safe(ady) && safe(bdy) && safe(cdy)) {
+        double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy, alift = adx * adx + ady * ady;
+        double cdxady = cdx * ady, adxcdy = adx * cdy, blift = bdx * bdx + bdy * bdy;
+        double adxbdy = adx * bdy, bdxady = bdx * ady, clift = cdx * cdx + cdy * cdy;
+        double det = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
+        double perm = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * alift +
+                      (std::fabs(cdxady) + std::fabs(adxcdy)) * blift +
+                      (std::fabs(adxbdy) + std::fabs(bdxady)) * clift;
+        double bound = ICC_BOUND * perm;
+        if (det > bound) return 1;
+        if (-det > bound) return -1;
+        if (perm == 0) return 0;
+    }
+    return incircle_exact(ax, ay, bx, by, cx, cy, dx, dy);
+}
+
+// sign of |a - b|^2 - |c - d|^2 (exact): compares two squared distances
+inline int cmp_dist2(double ax, double ay, double bx, double by, double cx, double cy, double dx, double dy) {
+    double x1 = ax - bx, y1 = ay - by, x2 = cx - dx, y2 = cy - dy;
+    if (safe(x1) && safe(y1) && safe(x2) && safe(y2)) {
+        double l = x1 * x1 + y1 * y1, r = x2 * x2 + y2 * y2, det = l - r;
+        double bound = 4.0 * EPS * (l + r);  // each of l, r has relative error <= 2 eps (1 + eps)
+        if (det > bound) return 1;
+        if (-det > bound) return -1;
+    }
+    const double v[8] = {ax, ay, bx, by, cx, cy, dx, dy};
+    std::vector<Big> B = to_big(v, 8);
+    Big p = sub(B[0], B[2]), q = sub(B[1], B[3]), s = sub(B[4], B[6]), t = sub(B[5], B[7]);
+    return sign(sub(add(mul(p, p), mul(q, q)), add(mul(s, s), mul(t, t))));
+}
+
+// sign of (a - c) . (b - c) (exact): > 0 when the angle a-c-b is acute, i.e. c lies strictly
+// outside the closed disc with diameter ab; <= 0 when c lies in that closed disc
+inline int dot2(double ax, double ay, double bx, double by, double cx, double cy) {
+    double acx = ax - cx, bcx = bx - cx, acy = ay - cy, bcy = by - cy;
+    if (safe(acx) && safe(bcx) && safe(acy) && safe(bcy)) {
+        double l = acx * bcx, r = acy * bcy, det = l + r;
+        double bound = CCW_BOUND * (std::fabs(l) + std::fabs(r));
+        if (det > bound) return 1;
+        if (-det > bound) return -1;
+        if (l == 0 && r == 0) return 0;
+    }
+    const double v[6] = {ax, ay, bx, by, cx, cy};
+    std::vector<Big> B = to_big(v, 6);
+    return sign(add(mul(sub(B[0], B[4]), sub(B[2], B[4])), mul(sub(B[1], B[5]), sub(B[3], B[5]))));
+}
+
+}  // namespace exact
+// END PREDICATES
+
+// ---- Delaunay triangulation: incremental Bowyer-Watson, ghost triangles, Hilbert order, walk ----
+using namespace std;
+
+#ifndef ORIENT
+#define ORIENT exact::orient2d
+#define INCIRCLE exact::incircle
+#define CMP_DIST2 exact::cmp_dist2
+#define DOT2 exact::dot2
+#endif
+
+static vector<double> X, Y;
+
+static int orient(int a, int b, int c) { return ORIENT(X[a], Y[a], X[b], Y[b], X[c], Y[c]); }
+static int incircle(int a, int b, int c, int d) {
+    return INCIRCLE(X[a], Y[a], X[b], Y[b], X[c], Y[c], X[d], Y[d]);
+}
+// sign of (a - c) . (b - c): <= 0 when c lies in the closed disc with diameter ab
+static int dot2(int a, int b, int c) { return DOT2(X[a], Y[a], X[b], Y[b], X[c], Y[c]); }
+// sign of |a - b|^2 - |c - d|^2
+static int cmp_dist2(int a, int b, int c, int d) {
+    return CMP_DIST2(X[a], Y[a], X[b], Y[b], X[c], Y[c], X[d], Y[d]);
+}
+
+struct Mesh {
+    // triangle t: vertices v[3t..3t+2] counter-clockwise, -1 = the vertex at infinity (a ghost);
+    // nb[3t+i] = the triangle across the edge opposite v[3t+i]
+    vector<int> v, nb;
+    vector<char> dead, mark;
+    vector<int> free_list;
+    int new_tri(int a, int b, int c) {
+        int t;
+        if (!free_list.empty()) {
+            t = free_list.back();
+            free_list.pop_back();
+            dead[t] = 0;
+        } else {
+            t = (int)dead.size();
+            v.resize(3 * t + 3);
+            nb.resize(3 * t + 3, -1);
+            dead.push_back(0);
+            mark.push_back(0);
+        }
+        v[3 * t] = a, v[3 * t + 1] = b, v[3 * t + 2] = c;
+        nb[3 * t] = nb[3 * t + 1] = nb[3 * t + 2] = -1;
+        return t;
+    }
+    bool ghost(int t) const { return v[3 * t] < 0 || v[3 * t + 1] < 0 || v[3 * t + 2] < 0; }
+    // does p lie strictly inside the circumcircle of t (for a ghost: the open outer half-plane of
+    // its hull edge, or the open edge itself)?
+    bool conflict(int t, int p) const {
+        int a = v[3 * t], b = v[3 * t + 1], c = v[3 * t + 2];
+        if (a < 0 || b < 0 || c < 0) {
+            while (c >= 0) { int tmp = a; a = b; b = c; c = tmp; }  // rotate: (a, b, infinity)
+            int o = orient(a, b, p);
+            if (o != 0) return o > 0;
+            // collinear with the hull edge: in conflict when strictly between a and b
+            double ax = X[a], bx = X[b], px = X[p];
+            if (ax != bx) return (ax < px && px < bx) || (bx < px && px < ax);
+            double ay = Y[a], by = Y[b], py = Y[p];
+            return (ay < py && py < by) || (by < py && py < ay);
+        }
+        return incircle(a, b, c, p) > 0;
+    }
+};
+
+static uint64_t hilbert(uint32_t x, uint32_t y, int order) {
+    uint64_t d = 0;
+    for (uint32_t s = 1u << (order - 1); s > 0; s >>= 1) {
+        uint32_t rx = (x & s) > 0, ry = (y & s) > 0;
+        d += (uint64_t)s * s * ((3 * rx) ^ ry);
+        if (ry == 0) {
+            if (rx == 1) { x = s - 1 - x; y = s - 1 - y; }
+            swap(x, y);
+        }
+    }
+    return d;
+}
+
+// Delaunay triangles (counter-clockwise) of the points X, Y; duplicates are referred to by their
+// first index; collinear or fewer than 3 distinct points: none.
+static vector<array<int, 3>> delaunay() {
+    int n = (int)X.size();
+    vector<array<int, 3>> out;
+    // merge duplicates: keep the first index of each position
+    vector<int> idx(n);
+    iota(idx.begin(), idx.end(), 0);
+    sort(idx.begin(), idx.end(), [](int a, int b) {
+        if (X[a] != X[b]) return X[a] < X[b];
+        if (Y[a] != Y[b]) return Y[a] < Y[b];
+        return a < b;
+    });
+    vector<int> pts;
+    for (int k = 0; k < n; ++k)
+        if (k == 0 || X[idx[k]] != X[idx[k - 1]] || Y[idx[k]] != Y[idx[k - 1]]) pts.push_back(idx[k]);
+    int m = (int)pts.size();
+    if (m < 3) return out;
+    // spatial sort (Hilbert curve on the bounding box)
+    double x0 = X[pts[0]], x1 = X[pts[m - 1]], y0 = Y[pts[0]], y1 = Y[pts[0]];
+    for (int p : pts) y0 = min(y0, Y[p]), y1 = max(y1, Y[p]);
+    double wx = x1 - x0, wy = y1 - y0;
+    const int ORDER = 16;
+    const double cells = 65535.0;
+    vector<pair<uint64_t, int>> key(m);
+    for (int k = 0; k < m; ++k) {
+        int p = pts[k];
+        double fx = wx > 0 ? (X[p] - x0) / wx : 0, fy = wy > 0 ? (Y[p] - y0) / wy : 0;
+        if (!(fx >= 0)) fx = 0;
+        if (!(fy >= 0)) fy = 0;
+        uint32_t ix = (uint32_t)min(cells, fx * cells), iy = (uint32_t)min(cells, fy * cells);
+        key[k] = {hilbert(ix, iy, ORDER), p};
+    }
+    sort(key.begin(), key.end());
+    for (int k = 0; k < m; ++k) pts[k] = key[k].second;
+    // the first triangle: the first two points and the first point off their line
+    int third = -1;
+    for (int k = 2; k < m; ++k)
+        if (orient(pts[0], pts[1], pts[k]) != 0) { third = k; break; }
+    if (third < 0) return out;  // all collinear
+    rotate(pts.begin() + 2, pts.begin() + third, pts.begin() + third + 1);
+    Mesh M;
+    int a = pts[0], b = pts[1], c = pts[2];
+    if (orient(a, b, c) < 0) swap(b, c);
+    int t0 = M.new_tri(a, b, c);
+    int g0 = M.new_tri(c, b, -1), g1 = M.new_tri(a, c, -1), g2 = M.new_tri(b, a, -1);
+    // t0's edge opposite a is (b, c), shared with ghost g0 = (c, b, inf) opposite inf (index 2)
+    auto link = [&](int t, int i, int u, int j) { M.nb[3 * t + i] = u; M.nb[3 * u + j] = t; };
+    link(t0, 0, g0, 2);
+    link(t0, 1, g1, 2);
+    link(t0, 2, g2, 2);
+    // ghosts share edges (x, inf): g0 = (c, b, inf), g1 = (a, c, inf), g2 = (b, a, inf)
+    for (int g : {g0, g1, g2})
+        for (int h : {g0, g1, g2}) {
+            if (g == h) continue;
+            // g = (p, q, inf): its edge opposite p is (q, inf), which is h's edge (inf, q) opposite
+            // h's second vertex when h = (q, r, inf)
+            if (M.v[3 * g + 1] == M.v[3 * h]) { M.nb[3 * g] = h; M.nb[3 * h + 1] = g; }
+        }
+    vector<int> start_of(X.size() + 1, -1);  // new triangle (u, w, p) by u; infinity is n
+    vector<int> cavity, stack_, created;
+    int last = t0;
+    for (int k = 3; k < m; ++k) {
+        int p = pts[k];
+        // walk from `last` (a real triangle) towards p
+        int t = last, steps = 0;
+        while (true) {
+            if (M.ghost(t)) break;
+            int next = -1;
+            for (int r = 0; r < 3; ++r) {
+                int i = (r + steps) % 3;
+                int u = M.v[3 * t + (i + 1) % 3], w = M.v[3 * t + (i + 2) % 3];
+                if (orient(u, w, p) < 0) { next = M.nb[3 * t + i]; break; }
+            }
+            if (next < 0) break;
+            t = next;
+            ++steps;
+        }
+        // the cavity: every triangle in conflict, connected to t
+        cavity.clear();
+        stack_.clear();
+        stack_.push_back(t);
+        M.mark[t] = 1;
+        while (!stack_.empty()) {
+            int s = stack_.back();
+            stack_.pop_back();
+            cavity.push_back(s);
+            for (int i = 0; i < 3; ++i) {
+                int u = M.nb[3 * s + i];
+                if (!M.mark[u] && M.conflict(u, p)) { M.mark[u] = 1; stack_.push_back(u); }
+            }
+        }
+        // its boundary edges (u, w) -> new triangles (u, w, p)
+        created.clear();
+        for (int s : cavity)
+            for (int i = 0; i < 3; ++i) {
+                int o = M.nb[3 * s + i];
+                if (M.mark[o]) continue;
+                int u = M.v[3 * s + (i + 1) % 3], w = M.v[3 * s + (i + 2) % 3];
+                // find which edge of o is (w, u)
+                int j = 0;
+                while (M.nb[3 * o + j] != s) ++j;
+                int nt = M.new_tri(u, w, p);  // cavity slots are freed only after this loop
+                created.push_back(nt);
+                M.nb[3 * nt + 2] = o;
+                M.nb[3 * o + j] = nt;
+                int ku = u < 0 ? n : u;
+                start_of[ku] = nt;
+            }
+        for (int nt : created) {
+            int w = M.v[3 * nt + 1];
+            int kw = w < 0 ? n : w;
+            int nxt = start_of[kw];  // the new triangle (w, z, p): across (w, p)
+            M.nb[3 * nt] = nxt;
+            M.nb[3 * nxt + 1] = nt;
+        }
+        for (int s : cavity) { M.mark[s] = 0; M.dead[s] = 1; M.free_list.push_back(s); }
+        for (int nt : created)
+            if (!M.ghost(nt)) { last = nt; break; }
+    }
+    for (int t = 0; t < (int)M.dead.size(); ++t)
+        if (!M.dead[t] && !M.ghost(t)) out.push_back({M.v[3 * t], M.v[3 * t + 1], M.v[3 * t + 2]});
+    return out;
+}
+
+// ---- input / output ----
+static string read_all() {
+    string s;
+    char buf[1 << 16];
+    size_t r;
+    while ((r = fread(buf, 1, sizeof buf, stdin)) > 0) s.append(buf, r);
+    return s;
+}
+
+static void read_points() {
+    static string in = read_all();
+    char* p = in.data();
+    char* end;
+    long n = strtol(p, &end, 10);
+    p = end;
+    X.resize(n), Y.resize(n);
+    for (long i = 0; i < n; ++i) {
+        X[i] = strtod(p, &end); p = end;
+        Y[i] = strtod(p, &end); p = end;
+    }
+}
+
+// ---- obstacle clearance: the widest path through the Delaunay faces ----
+// A disk of radius r crosses the Delaunay edge uv iff |uv| >= 2r; the faces are the triangles and
+// the outer face. The answer is min(clearance at start, clearance at goal, the bottleneck of the
+// widest path between their faces): Kruskal from the longest edge until the two faces meet.
+// The triangulation and the face location are exact; lengths are doubles on coordinates scaled by
+// one power of two (exact), as the answer is judged with a tolerance.
+struct DSU {
+    vector<int> p;
+    explicit DSU(int n) : p(n) { iota(p.begin(), p.end(), 0); }
+    int find(int x) { while (p[x] != x) x = p[x] = p[p[x]]; return x; }
+    void unite(int a, int b) { p[find(a)] = find(b); }
+};
+
+int main() {
+    string in = read_all();
+    char* p = in.data();
+    char* end;
+    long n = strtol(p, &end, 10);
+    p = end;
+    X.resize(n + 2), Y.resize(n + 2);  // the start and the goal are stored last (not obstacles)
+    for (long i = 0; i < n + 2; ++i) {
+        X[i] = strtod(p, &end); p = end;
+        Y[i] = strtod(p, &end); p = end;
+    }
+    if (n == 0) { printf("inf\n"); return 0; }
+    double M = 0;
+    for (long i = 0; i < n + 2; ++i) M = max(M, max(fabs(X[i]), fabs(Y[i])));
+    int e2 = 0;
+    frexp(M, &e2);
+    vector<double> sx(n + 2), sy(n + 2);
+    for (long i = 0; i < n + 2; ++i) sx[i] = ldexp(X[i], -e2), sy[i] = ldexp(Y[i], -e2);
+    auto d2 = [&](int a, int b) { return (sx[a] - sx[b]) * (sx[a] - sx[b]) + (sy[a] - sy[b]) * (sy[a] - sy[b]); };
+    int S = (int)n, G = (int)n + 1;
+    double clear2 = HUGE_VAL;  // the squared clearance at the start and at the goal: O(n) scans
+    for (int i = 0; i < n; ++i) clear2 = min(clear2, min(d2(i, S), d2(i, G)));
+    for (int i = 0; i < n; ++i)
+        if ((X[i] == X[S] && Y[i] == Y[S]) || (X[i] == X[G] && Y[i] == Y[G])) clear2 = 0;
+    vector<double> sxs = {X[S], X[G]}, sys = {Y[S], Y[G]};
+    X.resize(n), Y.resize(n);
+    vector<array<int, 3>> tris = delaunay();
+    X.push_back(sxs[0]), Y.push_back(sys[0]), X.push_back(sxs[1]), Y.push_back(sys[1]);
+    int F = (int)tris.size();  // face F is the outer face
+    auto face_of = [&](int q) {
+        for (int t = 0; t < F; ++t) {
+            auto& tr = tris[t];
+            if (orient(tr[0], tr[1], q) >= 0 && orient(tr[1], tr[2], q) >= 0 && orient(tr[2], tr[0], q) >= 0) return t;
+        }
+        return F;
+    };
+    int fs = face_of(S), fg = face_of(G);
+    double bottleneck2 = HUGE_VAL;  // squared length of the shortest edge the widest path crosses
+    if (fs != fg) {
+        vector<array<int, 3>> side;  // (u, v, triangle) with u < v
+        for (int t = 0; t < F; ++t)
+            for (int i = 0; i < 3; ++i) {
+                int a = tris[t][i], b = tris[t][(i + 1) % 3];
+                side.push_back({min(a, b), max(a, b), t});
+            }
+        sort(side.begin(), side.end());
+        vector<tuple<double, int, int>> edges;  // (squared length, face, face)
+        for (size_t k = 0; k < side.size();) {
+            size_t j = k;
+            while (j < side.size() && side[j][0] == side[k][0] && side[j][1] == side[k][1]) ++j;
+            int other = j - k == 2 ? side[k + 1][2] : F;
+            edges.emplace_back(d2(side[k][0], side[k][1]), side[k][2], other);
+            k = j;
+        }
+        sort(edges.begin(), edges.end(), [](auto& a, auto& b) { return get<0>(a) > get<0>(b); });
+        DSU dsu(F + 1);
+        for (auto& [len2, f1] : edges) {
+            dsu.unite(f1, f2);
+            if (dsu.find(fs) == dsu.find(fg)) { bottleneck2 = len2 / 4; break; }
+        }
+    }
+    double r2 = min(clear2, bottleneck2);
+    printf("%.17g\n", ldexp(sqrt(r2), e2));
+    return 0;
+}
