@@ -9,6 +9,7 @@ One entry point: :class:`Sandbox` (with :class:`Limits`) starts jailed children;
 ``errors``                the refusals (:class:`JailUnavailable` and its kinds): one line, exit 2
 ``mounts``                root's child side: staging for bubblewrap, the ``namespaces`` jail
 ``cgroups``               accounting of a whole sandbox: cgroup v1/v2, ``/proc`` sums
+``tmpfs``                 the writable ``/tmp`` and ``/dev/shm``: sizes within the memory limit, use
 ``seccomp``               the seccomp-BPF filter (denied calls; no new processes, not root)
 ``engines``               every installed copy of the forbidden packages and engines
 ``fontcache``             matplotlib's font cache, built outside the jail

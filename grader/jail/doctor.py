@@ -28,7 +28,8 @@ NOBODY = 65534
 
 USER_JAIL = ("bwrap+proc-tree+seccomp-noproc: the same allow-list as root (/usr, the Python installations, "
              "private /tmp), new user/pid/net/ipc/uts namespaces, dies with the grader; no new processes "
-             "(seccomp), so the student process's own CPU and memory limits are the whole sandbox's")
+             "(seccomp), so the student process's own CPU and memory limits are the whole sandbox's (its "
+             "address space leaves room for the sized /tmp and /dev/shm, the only writable mounts)")
 
 
 def userns_settings() -> str:
@@ -51,7 +52,7 @@ def _root_line() -> str:
     jail = ("bubblewrap allow-list jail (user/pid/net/ipc/uts/cgroup namespaces)" if kind == "bwrap" else
             "hand-written namespace jail (top-level directories covered)")
     return (f"root: {kind}+{acct}+seccomp: {jail}, dedicated uid per sandbox, NO_NEW_PRIVS, {sec}, "
-            f"whole-sandbox accounting and limits by {acct}, private /tmp, rlimits")
+            f"whole-sandbox accounting and limits by {acct}, private sized /tmp and /dev/shm, rlimits")
 
 
 def _user_line(who: str, ok: bool, why: str) -> str:

@@ -51,6 +51,7 @@ class Plan:
     cgroup_procs: list[str] = field(default_factory=list)  # files the child writes its pid to
     seccomp: bytes | None = None  # installed by the preexec (namespaces) or given to bubblewrap
     bwrap: list[str] = field(default_factory=list)  # bubblewrap's options (empty: the namespaces jail)
+    shm_mb: int = 8  # size of the private /dev/shm
 
 
 def mount(src: str | None, target: str, fstype: str | None, flags: int, data: str | None = None) -> None:
@@ -114,7 +115,7 @@ def jail_filesystem(plan: Plan, uid: int | None) -> None:
         elif os.path.exists(c):
             mount("/dev/null", c, None, MS_BIND)
     if os.path.isdir("/dev/shm"):
-        mount("tmpfs", "/dev/shm", "tmpfs", MS_NOSUID | MS_NODEV, f"mode=1777,size={plan.disk_mb}m")
+        mount("tmpfs", "/dev/shm", "tmpfs", MS_NOSUID | MS_NODEV, f"mode=1777,size={plan.shm_mb}m")
     os.mkdir(JAIL_WORKDIR, 0o700)
     if plan.fontlist:
         os.mkdir(MPL_DIR, 0o700)

@@ -11,12 +11,13 @@ whole on timeout, inside a kernel jail chosen by :func:`jail_kind`:
 
   - ``bwrap`` (Debian's bubblewrap, preferred): an allow-list by construction: a new root
     holding only ``/usr`` (and the ``/bin``, ``/lib*`` links), a few ``/etc`` files the dynamic
-    loader needs, the Python installations (read-only), a fresh ``/proc`` and minimal ``/dev``,
-    and a private size-limited ``/tmp`` with the working directory; new user, pid, network,
-    IPC, UTS and cgroup namespaces; dies with the grader;
+    loader needs, the Python installations (read-only), a fresh ``/proc`` and minimal ``/dev``
+    (read-only), a private sized ``/dev/shm`` and a private sized ``/tmp`` with the working
+    directory; new user, pid, network, IPC, UTS and cgroup namespaces; dies with the grader;
   - ``namespaces`` (fallback where bubblewrap is missing or cannot create a user namespace):
     a private mount namespace in which every top-level directory except the system ones and any
-    extra hidden path is covered by an empty, root-owned tmpfs (:mod:`grader.jail.mounts`);
+    extra hidden path is covered by an empty, root-owned tmpfs (:mod:`grader.jail.mounts`), with
+    a private sized ``/tmp`` and ``/dev/shm``;
 
 * **an ordinary user** (an instructor's account): the same ``bwrap`` allow-list jail, started
   by that user (bubblewrap needs only unprivileged user namespaces), with a seccomp filter that
@@ -28,6 +29,12 @@ whole on timeout, inside a kernel jail chosen by :func:`jail_kind`:
   refuses with :class:`JailUnavailable`, whose message names the fixes, unless the caller asked
   for the **trusted** mode (``trusted=True``, ``GRADER_TRUSTED=1``, ``judge --trusted``: a student
   checking their own code): rlimits and a temporary working directory only.
+
+In every jail the only writable mounts are ``/tmp`` and ``/dev/shm``: tmpfs (RAM) sized within the
+memory limit (:mod:`grader.jail.tmpfs`; bubblewrap's own root, its ``/dev`` and every covering
+tmpfs are remounted read-only). As root the cgroup charges their files; an ordinary account's
+RLIMIT_AS is the memory limit minus their sizes. What a submission keeps there is sampled
+(:meth:`Sandbox.sample_files`): a filled one is an MLE.
 
 In every jail all installed copies of the forbidden packages and engines
 (:func:`grader.jail.engines.cover_paths`) are covered and the paths in ``hide`` are hidden
@@ -61,6 +68,7 @@ from .fontcache import matplotlib_fontlist
 from .mounts import CLONE_NEWNET, CLONE_NEWUSER, JAIL_WORKDIR, MPL_DIR, Plan, jail_filesystem, stage_for_bwrap, unshare
 from .paths import outermost, python_roots, under
 from .procs import alive, children, parent, uid_processes
+from . import tmpfs
 
 __all__ = ["Limits", "Sandbox", "JailUnavailable", "jail_kind", "mechanism", "is_root", "bwrap_path", "python_roots",
            "uid_processes", "refusal_message", "refuses_processes", "require_jail", "JAIL_ENV", "TRUSTED_ENV", "LOCK_DIR", "JAIL_WORKDIR", "UID_BASE"]
@@ -107,7 +115,8 @@ class Limits:
     output_mb: int = 16  #: RLIMIT_FSIZE: largest file (stdout/stderr captures too), MiB
     open_files: int = 64  #: RLIMIT_NOFILE
     processes: int = 16  #: RLIMIT_NPROC (threads count too), binding because of the uid drop; cgroup pids.max
-    disk_mb: int = 32  #: size of the private /tmp (root mode)
+    disk_mb: int = 32  #: size of the private /tmp, at most an eighth of ``memory_mb`` (:func:`tmpfs.sizes`)
+    shm_mb: int = 8  #: size of the private /dev/shm, at most an eighth of ``memory_mb``
 
 
 def is_root() -> bool:
@@ -241,6 +250,8 @@ class Sandbox:
         self.group: cgroups.Group | None = None
         self.kind = "none"
         self.mechanism = "none"
+        #: what the submission keeps in the jail's tmpfs mounts (sampled by the runner)
+        self.files = tmpfs.FileUse(tmpfs.sizes(limits))
 
     # -- lifecycle -------------------------------------------------------------------------
     def __enter__(self) -> "Sandbox":
@@ -307,8 +318,8 @@ class Sandbox:
         if self.kind == "bwrap":
             expose = outermost(python_roots()) + ([fontlist] if fontlist else [])
             # root stages what bubblewrap (started as the sandbox uid) could not reach; a user binds directly
-            plan = Plan([], expose, self.private_dir if self.root_mode else "", self._cover, self.limits.disk_mb,
-                        cgroup_procs=self.group.procs_files, seccomp=prog)
+            plan = Plan([], expose, self.private_dir if self.root_mode else "", self._cover, self.files.mounts["/tmp"],
+                        cgroup_procs=self.group.procs_files, seccomp=prog, shm_mb=self.files.mounts["/dev/shm"])
             plan.bwrap = self._bwrap_options(plan, fontlist)
             return plan
         top = [f"/{d}" for d in os.listdir("/") if os.path.isdir(f"/{d}") and not os.path.islink(f"/{d}")]
@@ -318,13 +329,16 @@ class Sandbox:
         # either way it is bound back into the child's view
         roots = [r for r in python_roots() if any(under(r, h) for h in [*hide, "/tmp"])]
         font = Path(fontlist).read_bytes() if fontlist else b""
-        return Plan(hide, outermost(roots), self.private_dir, self._cover, self.limits.disk_mb, font,
-                    self.group.procs_files, prog)
+        return Plan(hide, outermost(roots), self.private_dir, self._cover, self.files.mounts["/tmp"], font,
+                    self.group.procs_files, prog, shm_mb=self.files.mounts["/dev/shm"])
 
     def _bwrap_options(self, plan: Plan, fontlist: str | None) -> list[str]:
         """bubblewrap's options: the allow-list (``/usr``, loader files, the Python installations),
         then the hidden paths that lie inside it (a course kept under ``/usr/local``) covered by
-        empty tmpfs, then the forbidden engines covered."""
+        empty tmpfs, then the forbidden engines covered. The only writable mounts are the sized
+        ``/tmp`` and ``/dev/shm`` (:func:`tmpfs.sizes`): bubblewrap's ``--dev`` and its new root are
+        unsized tmpfs owned by the sandbox's uid, so they and every covering tmpfs are remounted
+        read-only once set up (``--size`` applies only to the next ``--tmpfs``)."""
         a = ["--unshare-all", "--unshare-user", "--disable-userns", "--die-with-parent", "--new-session", "--cap-drop", "ALL",
              "--hostname", "sandbox"]
         for d in ("/usr", "/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32"):
@@ -335,6 +349,7 @@ class Sandbox:
         for e in ETC_ALLOWED:
             a += ["--ro-bind-try", e, e]
         a += ["--proc", "/proc", "--dev", "/dev",
+              "--size", str(plan.shm_mb << 20), "--perms", "1777", "--tmpfs", "/dev/shm", "--remount-ro", "/dev",
               "--size", str(plan.disk_mb << 20), "--perms", "1777", "--tmpfs", "/tmp",
               "--perms", "0700", "--dir", JAIL_WORKDIR]
         staged = [os.path.join(plan.staging, str(i)) if plan.staging else p for i, p in enumerate(plan.expose)]
@@ -342,31 +357,52 @@ class Sandbox:
         inside = [h for h in self._hidden if any(under(h, b) for b in bound)]
         holds = [h for h in inside if not any(under(h, e) for e in plan.expose)]  # may hold an installation
         for h in holds:
-            a += ["--perms", "0755", "--tmpfs", h]
+            a += ["--size", "4096", "--perms", "0755", "--tmpfs", h]
         for st, path in zip(staged, plan.expose):
             if path != fontlist:
                 a += ["--ro-bind", st, path]
         for h in inside:
             if h not in holds:
-                a += ["--perms", "0755", "--tmpfs", h]
+                a += ["--size", "4096", "--perms", "0755", "--tmpfs", h]
         if fontlist:
             a += ["--perms", "0700", "--dir", MPL_DIR,
                   "--ro-bind", staged[-1], f"{MPL_DIR}/{os.path.basename(fontlist)}"]
+        covered = []
         for c in plan.cover:
             if not any(under(c, b) for b in bound):
                 continue  # not in the jail at all
-            a += ["--tmpfs", c] if os.path.isdir(c) else ["--ro-bind", "/dev/null", c]
+            a += ["--size", "4096", "--tmpfs", c] if os.path.isdir(c) else ["--ro-bind", "/dev/null", c]
+            covered += [c] if os.path.isdir(c) else []
+        for path in ["/", *inside, *covered]:  # empty tmpfs owned by the sandbox's uid: read-only
+            a += ["--remount-ro", path]
         a += ["--chdir", JAIL_WORKDIR]
         return a
 
     def address_space_mb(self) -> int:
-        """RLIMIT_AS of each process: the memory limit itself without a cgroup; with one (which
-        bounds the real memory, RSS, of the whole sandbox) the limit plus
-        :data:`ADDRESS_HEADROOM_MB`, since libraries map far more than they touch (numpy, scipy
-        and matplotlib together do not even load under a 256 MiB address space)."""
-        if self.group is not None and self.group.limit_bytes and self.group.mechanism.startswith("cgroup"):
+        """RLIMIT_AS of each process: with a cgroup (which bounds the real memory, RSS and tmpfs
+        files, of the whole sandbox) the limit plus :data:`ADDRESS_HEADROOM_MB`, since libraries
+        map far more than they touch (numpy, scipy and matplotlib together do not even load under
+        a 256 MiB address space); without one, in a jail, the limit minus the sizes of its
+        writable tmpfs (:func:`tmpfs.sizes`: address space plus files stay within the limit);
+        without a jail the limit itself."""
+        if self.files_charged():
             return self.limits.memory_mb + ADDRESS_HEADROOM_MB
+        if self.kind in ("bwrap", "namespaces"):  # the files in its tmpfs mounts count too
+            return max(1, self.limits.memory_mb - sum(self.files.mounts.values()))
         return self.limits.memory_mb
+
+    def files_charged(self) -> bool:
+        """True when a cgroup bounds the sandbox's memory: it charges the pages of its tmpfs
+        files too (shmem), so the files need no separate accounting."""
+        return self.group is not None and bool(self.group.limit_bytes) and self.group.mechanism.startswith("cgroup")
+
+    def sample_files(self, pid: int) -> None:
+        """Measure what the submission keeps in the jail's tmpfs mounts (:attr:`files`), seen from
+        a process inside the jail: for bubblewrap a child of ``pid`` (bubblewrap itself stays in
+        the host's mounts), else ``pid``."""
+        if self.kind in ("bwrap", "namespaces"):
+            inner = children(pid)[:1] if self.kind == "bwrap" else [pid]
+            self.files.sample(inner[0] if inner else None)
 
     def decode_exit(self, code: int) -> int:
         """The student process's exit code as ``waitstatus_to_exitcode`` gives it (negative:

@@ -125,12 +125,14 @@ def _runqueue_seconds(box: Sandbox, pid: int) -> float:
 
 def _peak_rss_mb(box: Sandbox, pid: int) -> float:
     """Peak memory since the last :func:`_reset_peak`: of the whole sandbox (cgroup) when it has
-    a group, else the peak RSS of process ``pid``."""
+    a group, else the peak RSS of process ``pid``; plus, where no cgroup charges them, the files
+    kept in the jail's tmpfs mounts (:meth:`Sandbox.sample_files`)."""
     if box.group is not None:
+        files = 0.0 if box.files_charged() else box.files.peak_mb()
         try:
-            return box.group.peak_memory_mb()
+            return box.group.peak_memory_mb() + files
         except (OSError, ValueError):
-            return 0.0
+            return files
     try:
         with open(f"/proc/{pid}/status", "rb") as f:
             for line in f:
@@ -142,6 +144,7 @@ def _peak_rss_mb(box: Sandbox, pid: int) -> float:
 
 
 def _reset_peak(box: Sandbox, pid: int) -> None:
+    box.files.reset()
     if box.group is not None:
         try:
             box.group.reset_peak()
@@ -331,6 +334,12 @@ class _Child:
             self.exit_status = self.box.decode_exit(os.waitstatus_to_exitcode(status))
             self.proc.returncode = self.exit_status
 
+    def release(self) -> None:
+        """Close ``ctl_in`` once everything was sent: a stdio child waits for that before it exits."""
+        if self.ctl_in >= 0 and not self.pending:
+            os.close(self.ctl_in)
+            self.ctl_in = -1
+
     def kill(self) -> None:
         """Kill the process group, reap the child, then sweep every process of the sandbox uid."""
         if self.exit_status is None:
@@ -401,6 +410,8 @@ def _error_outcome(err: object, time_s: float = 0.0, memory_mb: float = 0.0) -> 
     frames = err.get("where")
     where = tuple(clean(w, 300) for w in frames[:4] if isinstance(w, str)) if isinstance(frames, list) else ()
     status = "memory" if kind == "MemoryError" else "error"
+    if "[Errno 28]" in msg:  # ENOSPC: a tmpfs of the jail is full, and its files are memory
+        status, msg = "memory", f"a file system of the jail is full (files there count as memory): {msg}"
     return RunOutcome(status, message=msg, time_s=time_s, memory_mb=memory_mb, where=where)
 
 
@@ -484,6 +495,7 @@ class FunctionWorker:
         cpu_exceeded = idle_exceeded = False
         while True:
             reply = child.wait_reply(min(time.monotonic() + _sample_s(self.box), deadline), want="id")
+            self.box.sample_files(child.pid)
             if reply is not None:  # the reply to this call, a violation, or junk (see _Child)
                 break
             if child.exit_status is not None or time.monotonic() >= deadline:
@@ -514,6 +526,9 @@ class FunctionWorker:
             self.stop()
             return RunOutcome("memory", message="the submission's processes together went over the memory limit",
                               time_s=time_s, memory_mb=max(mem, float(self.box.limits.memory_mb)))
+        if self.box.files.full_message() and not (reply is not None and "violation" in reply):
+            self.stop()  # its files go with its jail
+            return RunOutcome("memory", message=self.box.files.full_message(), time_s=time_s, memory_mb=mem)
         if reply is not None and "violation" in reply:
             self.stop()
             return RunOutcome("violation", message=reply["violation"], time_s=time_s, memory_mb=mem)
@@ -588,9 +603,15 @@ def run_stdio(box: Sandbox, source: str, input_text: str, time_limit: float, for
     waited = 0.0  # run-queue wait of the new process, as last seen while it was alive
     deadline = wall0 + wall_limit_for(time_limit)
     reply = None
+    peak = 0.0
     cpu_exceeded = junk = False
     while child.exit_status is None and time.monotonic() < deadline:
-        reply = child.wait_reply(min(time.monotonic() + _sample_s(box), deadline), want="__never__")
+        reply = child.wait_reply(min(time.monotonic() + _sample_s(box), deadline), want="exit")
+        box.sample_files(child.pid)
+        peak = max(peak, _peak_rss_mb(box, child.pid)) if box.group is not None else 0.0  # a tree is sampled
+        if reply is not None and "exit" in reply:  # the program ended: its files are measured, it may go
+            child.release()
+            reply = None
         if reply is not None and "violation" in reply:
             break
         if reply is not None and ("garbled" in reply or "output_limit" in reply):
@@ -614,8 +635,9 @@ def run_stdio(box: Sandbox, source: str, input_text: str, time_limit: float, for
     ru = child.rusage
     cpu = (ru.ru_utime + ru.ru_stime) if ru is not None else 0.0
     mem = (ru.ru_maxrss / 1024) if ru is not None else 0.0
-    if box.group is not None:  # the whole sandbox, forked helpers included
-        cpu, mem = max(cpu, _cpu_seconds(box, 0) - cpu0), max(mem, _peak_rss_mb(box, 0))
+    if box.group is not None:  # the whole sandbox, forked helpers included; not ru_maxrss: it keeps the
+        # RSS of the grader forked before exec (measured: 249 MB reported for a program of 17 MB)
+        cpu, mem = max(cpu, _cpu_seconds(box, 0) - cpu0), max(peak, _peak_rss_mb(box, 0))
     time_s = round(cpu, 4)
     outcome = _stdio_outcome(box, child, time_limit, time_s, mem, timed_out, junk, out_path, err_path)
     outcome.idle_s = max(0.0, wall - cpu - waited)
@@ -634,6 +656,8 @@ def _stdio_outcome(box: Sandbox, child: _Child, time_limit: float, time_s: float
     if _memory_limit_hit(box):
         return RunOutcome("memory", message="the program's processes together went over the memory limit",
                           time_s=time_s, memory_mb=max(mem, float(box.limits.memory_mb)))
+    if box.files.full_message():
+        return RunOutcome("memory", message=box.files.full_message(), time_s=time_s, memory_mb=mem)
     if _output_overflow(box, [out_path, err_path]):
         return RunOutcome("output_limit", message=f"more than {box.limits.output_mb} MiB of output",
                           time_s=time_s, memory_mb=mem)

@@ -37,6 +37,7 @@ at most); the kernel's answer reaches the page 56 ms after the move was sent
 """
 from __future__ import annotations
 
+import html
 import math
 from typing import Any, Callable, Mapping
 
@@ -156,7 +157,10 @@ class PointPicker(KitWidget):
     ``draw(ax, points)`` draws the picture (default: ``draw_delaunay``);
     ``presets`` adds or overrides presets (name -> points, or f(bounds, n));
     ``on_change(picker)`` runs after every change; ``title`` is a string or
-    ``title(points, triangles)``, redrawn with the picture (so it never goes stale).
+    ``title(points, triangles)``, redrawn with the picture (so it never goes stale);
+    ``status(points, triangles)`` writes the line under the picture (default: the point
+    count, and the Delaunay triangle count when the picture is the default one: a lesson
+    that draws something else says what it drew, or only the points are counted).
     A drag is one change: ``on_change`` runs when the point is released.
     """
 
@@ -167,7 +171,8 @@ class PointPicker(KitWidget):
                  presets: Mapping[str, Any] | None = None, bounds: Bounds = (0, 0, 1, 1),
                  on_change: Callable[["PointPicker"], None] | None = None, n: int = 16,
                  size: tuple[int, int] = (440, 400),
-                 title: str | Callable[[np.ndarray, np.ndarray], str] = "") -> None:
+                 title: str | Callable[[np.ndarray, np.ndarray], str] = "",
+                 status: Callable[[np.ndarray, np.ndarray], str] | None = None) -> None:
         self._points = as_points(points).reshape(-1, 2) if len(points) else np.zeros((0, 2))
         self._draw = draw or draw_delaunay
         self.presets: dict[str, Any] = dict(PRESETS)
@@ -177,6 +182,7 @@ class PointPicker(KitWidget):
         self.on_change = on_change
         self.n = n
         self.title = title
+        self.describe = status
         self._history: list[np.ndarray] = []
         self._drag: int | None = None       # the id of the drag whose moves are arriving
         self._ack: int | None = None        # the seq of the move being answered
@@ -321,9 +327,7 @@ class PointPicker(KitWidget):
             self.view.points = pixels
             if self._ack is not None:
                 self.view.ack, self._ack = self._ack, None
-        distinct = len(np.unique(self._points, axis=0)) if len(self._points) else 0
-        self.status.value = (f'<span class="kit-status">{len(self._points)} points '
-                             f'({distinct} distinct), {_count(len(self.triangles), "Delaunay triangle")}</span>')
+        self.status.value = f'<span class="kit-status">{html.escape(self.status_text())}</span>'
         if notify and self.on_change is not None:
             self.on_change(self)
 
@@ -335,8 +339,25 @@ class PointPicker(KitWidget):
         """The picture as PNG bytes, drawn by Agg from the same axes (for notebooks run headless)."""
         return self.canvas.png()
 
+    def status_text(self) -> str:
+        """The line under the picture: ``status(points, triangles)`` when the lesson gives one, else the
+        points (and the Delaunay triangles, when the picture is the default Delaunay drawing).
+
+        >>> PointPicker([(0, 0), (1, 0), (0, 1)]).status_text()
+        '3 points (3 distinct), 1 Delaunay triangle'
+        >>> PointPicker([(0, 0), (1, 0)], draw=lambda ax, pts: None).status_text()
+        '2 points (2 distinct)'
+        """
+        if self.describe is not None:
+            return self.describe(self._points, self.triangles)
+        distinct = len(np.unique(self._points, axis=0)) if len(self._points) else 0
+        text = f"{len(self._points)} points ({distinct} distinct)"
+        if self._draw is draw_delaunay:
+            text += f", {_count(len(self.triangles), 'Delaunay triangle')}"
+        return text
+
     def static_text(self) -> str:
         title = self.title_text()
-        return (f"PointPicker{': ' + title if title else ''} ({len(self._points)} points, "
-                f"{_count(len(self.triangles), 'Delaunay triangle')}; click to add, drag to move, click a point to remove)")
+        return (f"PointPicker{': ' + title if title else ''} ({self.status_text()}; "
+                "click to add, drag to move, click a point to remove)")
 

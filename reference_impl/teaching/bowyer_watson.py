@@ -129,7 +129,10 @@ class Step:
     * ``boundary``: the cavity boundary, directed edges (a, b) in counter-clockwise
       order around the point;
     * ``new``: the triangles created, (a, b, point) for every boundary edge (a, b);
-    * ``triangles``: the whole triangulation after the step, real triangles only, (k, 3).
+    * ``triangles``: the whole triangulation after the step, real triangles only, (k, 3);
+    * ``walked``: the triangles the walk stood on to find the first bad one (1: it started
+      in it), a count that does not depend on the machine; 0 with ``locate="scan"`` and for
+      the first three points, which are not located by a walk.
 
     The first two steps are the start-up: the first point creates nothing, the
     second creates the two ghost triangles on either side of the line through
@@ -152,6 +155,7 @@ class Step:
     boundary: list[Edge]
     new: list[Triangle]
     triangles: np.ndarray
+    walked: int = 0
 
     def __str__(self) -> str:
         head = f"insert {_format_point(self.point)}: "
@@ -298,6 +302,7 @@ class _Triangulation:
         self.triangles: dict[Triangle, None] = {}
         self.apex: dict[Edge, int] = {}
         self.last: Triangle | None = None  # a real triangle at the last inserted point
+        self.walked = 0  # triangles the last walk stood on (Step.walked)
 
     # -- bookkeeping
     def add(self, t: Triangle) -> Triangle:
@@ -355,10 +360,12 @@ class _Triangulation:
         theorem); in an arbitrary triangulation it could go round in circles.
         """
         t = self.last
+        self.walked = 1
         while not _is_ghost(t):
             for a, b in _edges(t):
                 if orient2d(self.xy[a], self.xy[b], p) < 0:
                     t = self.across(a, b)
+                    self.walked += 1
                     break
             else:
                 return t
@@ -398,6 +405,7 @@ class _Triangulation:
     def insert(self, i: int, locate: str) -> Step:
         """Insert point i: the tutorial's loop body, corrected."""
         p = self.xy[i]
+        self.walked = 0
         # 1. the bad triangles: every triangle whose circumcircle contains p
         if locate == "scan":  # the tutorial's way: test every triangle
             bad = [t for t in self.triangles if self.in_conflict(t, p)]
@@ -418,7 +426,7 @@ class _Triangulation:
         new = [self.new_triangle(a, b, i) for a, b in boundary]
         # at most two boundary edges touch the vertex at infinity, so a real new triangle exists
         self.last = next(t for t in new if not _is_ghost(t))
-        return Step(i, p, located, bad, boundary, new, np.zeros((0, 3), dtype=np.int64))
+        return Step(i, p, located, bad, boundary, new, np.zeros((0, 3), dtype=np.int64), self.walked)
 
     def start(self, i: int, j: int) -> list[Triangle]:
         """Start-up with two points: two ghost triangles, one on each side of their line."""

@@ -55,7 +55,18 @@ The orientation mistake bites together with the boundary one: a kept shared
 edge can have the new point on its right, which makes a clockwise triangle,
 whose in-circle sign is then backwards for every later point.  With a correct
 boundary, every new triangle is counter-clockwise by construction (the course's
-version still checks it with ``orient2d``).
+version still checks it with ``orient2d``), as long as the super-triangle is: the
+tutorial's happens to be listed counter-clockwise, so on its own the mistake is
+latent.  List the same corners clockwise and every in-circle answer is backwards
+from the first point on (no point is ever inserted); orienting every triangle, the
+super-triangle included, cures it:
+
+>>> cw = SUPER_TRIANGLE[::-1]
+>>> naive_bowyer_watson(EXHIBITS["clockwise"], fix=["predicate", "boundary"], super_triangle=cw).tolist()
+[]
+>>> check("clockwise", fix=ALL_FIXES, super_triangle=cw)
+(True, 'ok')
+
 Rounding noise in the determinant is the remaining mistake (4): on the 12 integer
 points of x^2 + y^2 = 25 every in-circle test is an exact tie, which ``np.linalg.det``
 decides by noise.  Which insertion orders break depends on the machine's BLAS, so
@@ -192,7 +203,8 @@ def _exact_boundary(bad: list[CoordTriangle]) -> list[tuple[Point, Point]]:
     return [e for e in edges if (e[1], e[0]) not in present]
 
 
-def naive_bowyer_watson(points, *, fix: Iterable[str] = (), log: list | None = None) -> np.ndarray:
+def naive_bowyer_watson(points, *, fix: Iterable[str] = (), log: list | None = None,
+                        super_triangle: CoordTriangle = SUPER_TRIANGLE) -> np.ndarray:
     """The tutorial's algorithm (with its mistakes) as (m, 3) indices into ``points``.
 
     Triangles are returned in the vertex order the algorithm built them (it
@@ -201,6 +213,8 @@ def naive_bowyer_watson(points, *, fix: Iterable[str] = (), log: list | None = N
     module docstring).  ``log``: a list; one line per inserted point is appended
     (its bad triangles, the boundary kept, the triangles made; super-triangle
     corners are S0, S1, S2), to compare with a correct run's step log.
+    ``super_triangle``: its three corners, in the order the algorithm starts from (the
+    tutorial's, counter-clockwise, by default); the ``"orientation"`` fix orients it too.
 
     Three input points that form a perfectly ordinary triangle are enough for
     the overlap (mistake 2): the second point's cavity has two triangles, and
@@ -237,10 +251,12 @@ def naive_bowyer_watson(points, *, fix: Iterable[str] = (), log: list | None = N
     for i, p in enumerate(coords):
         first_index.setdefault(p, i)
 
-    def name(v: Point) -> str:
-        return f"S{SUPER_TRIANGLE.index(v)}" if v in SUPER_TRIANGLE else str(first_index[v])
+    corners = tuple((float(x), float(y)) for x, y in super_triangle)
 
-    triangulation: list[CoordTriangle] = [SUPER_TRIANGLE]
+    def name(v: Point) -> str:
+        return f"S{corners.index(v)}" if v in corners else str(first_index[v])
+
+    triangulation: list[CoordTriangle] = [make(*corners)]
     for i, p in enumerate(coords):
         bad = [t for t in triangulation if contains(t, p)]
         boundary = _exact_boundary(bad) if "boundary" in fixes else tutorial_boundary(bad)
@@ -252,7 +268,7 @@ def naive_bowyer_watson(points, *, fix: Iterable[str] = (), log: list | None = N
             triangulation.remove(t)
         for a, b in boundary:
             triangulation.append(make(a, b, p))
-    kept = [t for t in triangulation if not any(v in SUPER_TRIANGLE for v in t)]
+    kept = [t for t in triangulation if not any(v in corners for v in t)]
     return np.array([[first_index[v] for v in t] for t in kept], dtype=np.int64).reshape(-1, 3)
 
 

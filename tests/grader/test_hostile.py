@@ -148,3 +148,32 @@ def test_messages_help_the_student(tiny_judge):
     assert "scipy.spatial" in r.tests[0].message
     r = tiny_judge.judge_path(HERE / "hostile" / "huge_index.py")
     assert "outside" in r.tests[0].message and r.tests[0].input_preview.startswith("4\n")
+
+
+def test_files_in_the_jail_count_as_memory(tiny_judge):
+    """Issue "Hardening round 4", item 2: 300 MB of files (256 MB allowed) kept in /dev/shm or
+    /tmp is MLE saying where (a program too: it waits until they are measured), with the files
+    counted in the memory reported (as an ordinary account bubblewrap's unsized /dev/shm held
+    3 GiB per test: WA, 17 MB reported); /dev and the jail's root are read-only. Nothing is left
+    on the host."""
+    limit = tiny_judge.problem.memory_mb
+    for name, where, size in (("files_in_dev_shm", "/dev/shm", 8), ("files_in_tmp", "/tmp", 32),
+                              ("files_in_dev_shm_stdio", "/dev/shm", 8)):
+        t = tiny_judge.judge_path(HERE / "hostile" / f"{name}.py").tests[0]
+        assert t.verdict == "MLE" and f"kept {size} MB in {where}," in t.message, (t.verdict, t.message)
+        assert size <= t.memory_mb <= limit, t.memory_mb
+    t = tiny_judge.judge_path(HERE / "hostile" / "files_in_dev_and_root.py").tests[0]
+    assert t.verdict == "RE" and "not writable: /dev/hog-: errno" in t.message, (t.verdict, t.message)
+    assert t.memory_mb < limit
+    assert not [p for d in ("/dev/shm", "/tmp", "/") for p in Path(d).glob("hog-*")]
+
+
+def test_a_program_is_not_charged_the_graders_memory(tiny_judge, tmp_path):
+    """A program's (stdio) memory is its sandbox's: ``ru_maxrss`` of the process the grader starts
+    keeps the grader's own RSS from before ``exec`` (after compiling numba, 249 MB was reported for
+    files_in_dev_shm_stdio, a program of 17 MB)."""
+    ballast = b"\x01" * (200 << 20)  # the grader holds 200 MB when it forks
+    sub = tmp_path / "echo.py"
+    sub.write_text("import sys\nsys.stdin.read()\nprint(0)\n")
+    t = tiny_judge.judge_path(sub).tests[0]
+    assert len(ballast) and 0 < t.memory_mb < 100, t.memory_mb

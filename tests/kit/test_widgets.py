@@ -342,7 +342,11 @@ def test_picker_custom_draw_and_static_picture():
     assert calls == [3, 4]
     bundle = p._repr_mimebundle_()
     assert png_size(png_of(bundle)) == (440, 400)            # the headless picture: Agg, same axes
-    assert "4 points, 2 Delaunay triangles" in bundle["text/plain"]
+    # a picture the lesson draws itself: the line counts the points, it claims no Delaunay triangles
+    assert "4 points (4 distinct);" in bundle["text/plain"] and "Delaunay" not in bundle["text/plain"]
+    assert "Delaunay" not in p.status.value
+    said = PointPicker([(0, 0), (1, 0)], draw=lambda ax, pts: None, status=lambda pts, tris: f"{len(pts)} stops")
+    assert "2 stops" in said.status.value and "2 stops;" in said.static_text()
     assert "application/vnd.jupyter.widget-view+json" in bundle
 
 

@@ -20,9 +20,9 @@ import pytest
 from pointsets import circle, collinear, grid, integer_circle, uniform, with_duplicates
 from reference_impl.teaching.bowyer_watson import (INFINITE, TUTORIAL_POINTS, Step, bowyer_watson,
                                           cavity_boundary, dry_run, insertion_order)
-from reference_impl.teaching.tutorial_bugs import (ALL_FIXES, EXHIBITS, RING_25, det_in_circumcircle, tutorial_det,
-                                          epsilon_says_degenerate, naive_bowyer_watson,
-                                          tutorial_boundary)
+from reference_impl.teaching.tutorial_bugs import (ALL_FIXES, EXHIBITS, RING_25, SUPER_TRIANGLE, det_in_circumcircle,
+                                          epsilon_says_degenerate, naive_bowyer_watson, tutorial_boundary,
+                                          tutorial_det)
 from reference_impl.exact.verify import check_delaunay, exact_coordinates, incircle_exact, orient_exact
 from reference_impl.exact.predicates import incircle
 
@@ -199,6 +199,34 @@ def test_scan_finds_the_same_steps_as_the_walk(name):
         assert (s.located is None) == (t.located is None)
         assert set(s.boundary) == set(t.boundary) and np.array_equal(s.triangles, t.triangles)
     check_trace(points, scan, r2)
+
+
+def test_walked_counts_the_triangles_the_walk_stood_on():
+    """Step.walked: 0 for the scan and the first three points; with the walk, at least 1, and the
+    walk from the previous point's triangle is short in a curve order and long in a random one."""
+    pts = uniform(400, seed=3)
+    scan = []
+    bowyer_watson(pts, locate="scan", order="input", trace=scan, snapshots=False)
+    assert all(s.walked == 0 for s in scan)
+    walks = {}
+    for order in ("input", "canonical"):          # the points' own (random) order, and BRIO
+        steps = []
+        bowyer_watson(pts, locate="walk", order=order, trace=steps, snapshots=False)
+        assert all(s.walked == 0 for s in steps[:3]) and all(s.walked >= 1 for s in steps[3:])
+        walks[order] = np.mean([s.walked for s in steps[3:]])
+    assert walks["canonical"] < 6 and walks["input"] > 2 * 6
+
+
+def test_the_tutorials_mistake_1_is_latent_until_the_super_triangle_is_clockwise():
+    only_1 = ["predicate", "boundary"]
+    rand = random.Random(4)
+    for _ in range(100):
+        q = [(float(rand.randint(-50, 50)), float(rand.randint(-50, 50))) for _ in range(rand.randint(3, 12))]
+        assert check_delaunay(q, naive_bowyer_watson(q, fix=only_1))[0]
+    clockwise = SUPER_TRIANGLE[::-1]
+    pts = EXHIBITS["clockwise"]
+    assert naive_bowyer_watson(pts, fix=only_1, super_triangle=clockwise).shape == (0, 3)
+    assert check_delaunay(pts, naive_bowyer_watson(pts, fix=ALL_FIXES, super_triangle=clockwise)) == (True, "ok")
 
 
 def test_collinear_start_inserts_the_first_point_off_the_line_third():
