@@ -330,7 +330,7 @@ def test_only_the_sized_tmp_and_dev_shm_are_writable(kind, monkeypatch, tiny_jud
     and the tmpfs covering hidden paths and engines were writable by the sandbox's uid, unsized
     (the host's RAM); now the writable mounts are ``/tmp`` and ``/dev/shm``, tmpfs sized within the
     memory limit, and without a cgroup (the account) RLIMIT_AS leaves room for them."""
-    import grader.sandbox as sandbox
+    import grader.jail.sandbox as sandbox
     if kind == "user":
         monkeypatch.setattr(sandbox, "is_root", lambda: False)
         if sandbox.jail_kind() != "bwrap":
