@@ -1,8 +1,9 @@
-"""A course deployed before the grader's rooms keeps working: its ``nbgrader_config.py`` (the text
-below is ``assignments/nbgrader_config.py`` as it was before the move) still loads, and every class
-and name it imports from the grader resolves to the moved module's own object.
+"""A course deployed before the grader's rooms keeps working: its ``nbgrader_config.py`` (the
+course's own with the old module names put back, which is the file as it was before the move)
+still loads, every class and name it imports resolves to the moved module's own object, and the
+old ``python -m grader.<name>`` commands print what the new modules print.
 
-    .venv/bin/python -m pytest tests/nbgrader/test_old_config.py -n 0 -q   (a second)
+    .venv/bin/python -m pytest tests/nbgrader/test_old_config.py -n 0 -q   (about 20 s alone)
 """
 from __future__ import annotations
 
@@ -16,29 +17,24 @@ from grader.course import nbgrader_autograde
 from grader.judging.submissions import CODE_STUB
 from grader.problems import REPO
 
-OLD_CONFIG = '''\
-import os
+#: the old module names -> the new ones; the course's config with the old names put back is the
+#: config as it was before the move (only these names changed in it)
+RENAMED = {"grader.nbgrader_autograde": "grader.course.nbgrader_autograde",
+           "grader.course_notebooks": "grader.course.course_notebooks"}
 
-from nbgrader.preprocessors import AssignLatePenalties, CheckCellMetadata, LimitOutput, SaveAutoGrades
 
-from grader.course_notebooks import CODE_STUB
-from grader.nbgrader_autograde import CourseLatePolicy, JudgeCells
-
-c = get_config()  # noqa: F821 - provided by nbgrader when it loads this file
-
-c.CourseDirectory.root = os.path.dirname(os.path.abspath(__file__))
-c.CourseDirectory.course_id = "delaunay-course"
-c.CourseDirectory.ignore = [".ipynb_checkpoints", "*.pyc", "__pycache__", "feedback", ".cache"]
-c.Autograde.autograde_preprocessors = [JudgeCells, LimitOutput, SaveAutoGrades, AssignLatePenalties,
-                                       CheckCellMetadata]
-c.AssignLatePenalties.plugin_class = CourseLatePolicy
-c.LateSubmissionPlugin.penalty_method = "none"
-c.ClearSolutions.code_stub = {"python": CODE_STUB}
-'''
+def old_config() -> str:
+    """``assignments/nbgrader_config.py`` as a course deployed before the move has it."""
+    text = (REPO / "assignments" / "nbgrader_config.py").read_text()
+    for old, new in RENAMED.items():
+        assert f"from {new} import" in text, new
+        text = text.replace(new, old)
+    return text
 
 
 def test_an_old_course_config_still_loads(tmp_path):
-    (tmp_path / "nbgrader_config.py").write_text(OLD_CONFIG)
+    (tmp_path / "nbgrader_config.py").write_text(old_config())
+    assert "from grader.nbgrader_autograde import CourseLatePolicy, JudgeCells" in old_config()
     config = PyFileConfigLoader("nbgrader_config.py", path=str(tmp_path)).load_config()
     assert config.Autograde.autograde_preprocessors[0] is nbgrader_autograde.JudgeCells
     assert config.AssignLatePenalties.plugin_class is nbgrader_autograde.CourseLatePolicy
