@@ -1,10 +1,13 @@
-"""The benchmark scripts stay runnable: every script under benchmarks/ compiles, and the Delaunay
-benchmark prints its table on small sizes (timings are printed, never asserted).
+"""The benchmark scripts stay runnable: every script under benchmarks/ compiles, the Delaunay
+benchmark prints its table on small sizes, and the judge-overhead benchmark prints its tables for
+two problems whose numbers add up (timings are printed, never asserted).
 
 Run: .venv/bin/python -m pytest tests/test_benchmarks.py -q
 """
 from __future__ import annotations
 
+import json
+import math
 import py_compile
 import subprocess
 import sys
@@ -35,3 +38,42 @@ def test_bench_delaunay_prints_its_table():
         # times, so the ratio must lie in the interval the printed times allow, not at their quotient.
         low, high = max(ours - 5e-4, 0) / (tri + 5e-4), (ours + 5e-4) / max(tri - 5e-4, 1e-12)
         assert low - 0.005 <= ratio <= high + 0.005, (r, low, high)
+
+
+@pytest.mark.slow
+def test_bench_judge_overhead_quick(tmp_path):
+    """Quick mode (two problems, 2 students): the output's shape and its sums, never its timings."""
+    out = tmp_path / "overhead.json"
+    run = subprocess.run([sys.executable, "benchmarks/bench_judge_overhead.py", "--quick", "--json", str(out)],
+                         cwd=ROOT, capture_output=True, text=True, timeout=900)
+    assert run.returncode == 0, run.stderr[-3000:]
+    for heading in ("cpu method:", "== start-up of one judge command", "== empty-work classes", "== per student:",
+                    "== per grade run", "== where a later student's overhead goes"):
+        assert heading in run.stdout, (heading, run.stdout)
+    data = json.loads(out.read_text())
+    assert data["method"] in ("cgroup-v1", "cgroup-v2", "proc")
+    assert data["method"] in run.stdout
+    assert {"python -c pass", "python -m grader list"} <= set(data["startup"])
+    assert all(v["cpu_median"] > 0 for v in data["startup"].values())
+    runs = data["runs"]
+    assert [(r["problem"], r["lang"]) for r in runs] == [("closest-pair", "python"), ("largest-empty-circle", "python")]
+    for r in runs:
+        students = r["students"]
+        assert [s["student"] for s in students] == ["s1", "s2"]
+        assert all(s["verdict"] == "AC" and s["tests"] > 0 for s in students), students
+        for s in students:
+            assert s["total"] > 0 and s["own"] > 0
+            assert math.isclose(s["overhead"], s["total"] - s["own"], abs_tol=1e-9)
+            assert math.isclose(s["ratio"], s["overhead"] / s["own"], rel_tol=1e-9)
+            line = next(li.split() for li in run.stdout.splitlines() if li.startswith(f"{r['problem']} ")
+                        and f" {s['student']} " in li)
+            assert line[3] == str(s["tests"]) and float(line[4]) == round(s["total"], 3), line
+        # the run's CPU is its start-up, its students and its tail (all read from one counter)
+        parts = r["startup"] + sum(s["total"] for s in students) + r["tail"]
+        assert math.isclose(parts, r["cpu"], abs_tol=1e-6), (parts, r["cpu"])
+        b = r["extra"]["breakdown"]
+        named = sum(b[k] for k in ("jail+child start", "imports", "per-test fixed", "transport", "checker"))
+        assert math.isclose(named + b["rest"], b["overhead"], abs_tol=1e-9)
+        assert math.isclose(b["overhead"], students[1]["overhead"], abs_tol=1e-9)  # students 2..n: here s2 alone
+        assert r["extra"]["replay"]["tests"] == students[0]["tests"] and r["extra"]["replay"]["rejected"] == 0
+    assert data["per_test_fixed"] * 29 + data["per_submission_fixed"] > 0

@@ -7,18 +7,19 @@ draws step ``index`` on a matplotlib Axes.  With ``pseudocode`` (a list of
 ``(key, text)`` lines) and ``phases`` (a function step -> key), the line of the
 pseudocode that the current step executes is highlighted.  Two ready-made
 players: ``StepPlayer.bowyer_watson(points)`` (every insertion in four phases:
-locate, bad triangles, cavity boundary, new triangles) and
+locate, bad triangles, cavity boundary, new triangles, then the answer without the ghost
+triangles, the pseudocode's last line) and
 ``StepPlayer.lawson(points)`` (Lawson's edge flips, one at a time).
 
 >>> p = StepPlayer.bowyer_watson([(1, 1), (3, 2), (5, 1), (4, 4)])
 >>> len(p.steps), p.index
-(10, 0)
+(11, 0)
 >>> p.next.click(); p.next.click(); p.index
 2
 >>> p.current_line
 'locate'
 >>> print(p.caption.value.split("<br>")[0])
-<b>step 3/10</b>: insert point 2 at (5, 1): it lies outside the current hull (only ghost triangles contain it)
+<b>step 3/11</b>: insert point 2 at (5, 1): it lies outside the current hull (only ghost triangles contain it)
 >>> "image/png" in p._repr_mimebundle_()
 True
 """
@@ -92,7 +93,7 @@ def bowyer_watson_frames(points, order: str = "input") -> tuple[np.ndarray, list
 
     >>> pts, frames = bowyer_watson_frames([(1, 1), (3, 2), (5, 1), (4, 4)])
     >>> [f.phase for f in frames]
-    ['start', 'start', 'locate', 'bad', 'boundary', 'new', 'locate', 'bad', 'boundary', 'new']
+    ['start', 'start', 'locate', 'bad', 'boundary', 'new', 'locate', 'bad', 'boundary', 'new', 'done']
     """
     pts = as_points(points)
     steps: list[Step] = []
@@ -106,8 +107,8 @@ def bowyer_watson_frames(points, order: str = "input") -> tuple[np.ndarray, list
             for phase in ("locate", "bad", "boundary", "new"):
                 frames.append(BWFrame(phase, s, before, k))
         before = s.triangles
-    if not frames:
-        frames.append(BWFrame("done", None, result, 0))
+    # the last line of the pseudocode: the answer, without the ghost triangles
+    frames.append(BWFrame("done", None, result, len(steps)))
     return pts, frames
 
 
@@ -158,7 +159,10 @@ def _describe_bw(pts: np.ndarray) -> Callable[[BWFrame], str]:
     def describe(f: BWFrame) -> str:
         s = f.step
         if s is None:
-            return "fewer than three points off one line: no triangle to build"
+            if not len(f.before):
+                return "fewer than three points off one line: no triangle to build"
+            return (f"done: the answer is the {len(f.before)} triangles that do not touch the vertex at "
+                    "infinity (the ghost triangles are dropped)")
         x, y = (float(v) for v in s.point)
         head = f"insert point {s.index} at ({x:g}, {y:g})"
         if f.phase == "start":
@@ -457,9 +461,9 @@ class PickAndStep(KitWidget):
 
     >>> lab = PickAndStep([(0.2, 0.2), (0.8, 0.3), (0.5, 0.9)])
     >>> len(lab.player.steps)
-    6
+    7
     >>> lab.picker.add_point(0.5, 0.5); len(lab.player.steps), len(lab.picker.triangles)
-    (10, 3)
+    (11, 3)
     """
 
     def __init__(self, points=(), **picker_kwargs: Any) -> None:

@@ -138,8 +138,8 @@ def test_lesson_03_player_picker_and_quiz_work_in_chromium(lab, page):
         diag = page.evaluate(IN_KERNEL, "print(len(lab.picker.points), lab.picker.errors.outputs, lab.errors.outputs)")
         pytest.fail(f"the click at pixel ({px:.0f}, {py:.0f}) added no point; kernel: {diag}")
     assert "5 Delaunay triangles" in status.inner_text()
-    got = kernel_says(page, "print(len(lab.picker.points), len(lab.picker.triangles), len(lab.player.steps))", "5 5 14")
-    assert got == "5 5 14", got
+    got = kernel_says(page, "print(len(lab.picker.points), len(lab.picker.triangles), len(lab.player.steps))", "5 5 15")
+    assert got == "5 5 15", got
     x, y = json.loads(page.evaluate(IN_KERNEL, "print(json.dumps(lab.picker.points[-1].tolist()))"))
     assert abs(x - 3.5) < 0.05 and abs(y - 2.5) < 0.05
     page.locator(".kit-pick-and-step").first.screenshot(path=str(SHOTS / "lesson03-picker.png"))

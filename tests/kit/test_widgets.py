@@ -68,7 +68,7 @@ def test_bowyer_watson_player_steps_through_the_trace_and_highlights_each_phase(
     steps = []
     bowyer_watson(TUTORIAL, trace=steps, order="input")
     inserting = [s for s in steps if s.bad]
-    assert len(p.steps) == 2 + 4 * len(inserting)        # start-up, then 4 phases per insertion
+    assert len(p.steps) == 2 + 4 * len(inserting) + 1    # start-up, 4 phases per insertion, the answer
     seen_lines, seen_images = [], set()
     for k in range(len(p.steps)):
         assert p.index == k
@@ -83,8 +83,10 @@ def test_bowyer_watson_player_steps_through_the_trace_and_highlights_each_phase(
     assert seen_lines[:2] == ["start", "start"]
     assert seen_lines[2:6] == ["locate", "bad", "boundary", "new"]
     assert len(seen_images) == len(p.steps)               # every step draws a different picture
+    assert seen_lines[-1] == "done"                         # every line of the pseudocode is reached
+    assert {key for key, _ in BOWYER_WATSON_PSEUDOCODE} == set(seen_lines)
     last = p.steps[-1]
-    assert canon(last.step.triangles) == canon(bowyer_watson(TUTORIAL)) == scipy_canon(TUTORIAL)
+    assert canon(last.before) == canon(bowyer_watson(TUTORIAL)) == scipy_canon(TUTORIAL)
     p.prev.click()
     assert p.index == len(p.steps) - 2
     p.slider.value = 4                                      # the slider counts from 1: step 4 is index 3
@@ -97,7 +99,7 @@ def test_player_on_random_points_ends_in_the_delaunay_triangulation():
     p = StepPlayer.bowyer_watson(pts)
     p.index = 10 ** 6                                      # clamps to the last step
     assert p.index == len(p.steps) - 1
-    assert canon(p.step.step.triangles) == scipy_canon(pts)
+    assert p.step.phase == "done" and canon(p.step.before) == scipy_canon(pts)
     assert (p.image.scene["w"], p.image.scene["h"]) == (480, 400) and not p.image.interactive
     from reference_impl.kit.scene import pixel_points
     P = pixel_points(p.canvas, pts)                         # the browser's triangles, read back as indices
@@ -108,7 +110,7 @@ def test_player_on_random_points_ends_in_the_delaunay_triangulation():
                 d = np.hypot(*(P[None, :, :] - tri[:, None, :]).transpose(2, 0, 1))
                 if d.min(axis=1).max() < 1e-2:
                     drawn.add(tuple(sorted(d.argmin(axis=1).tolist())))
-    assert {tuple(sorted(t)) for t in p.step.step.triangles} <= drawn
+    assert {tuple(sorted(t)) for t in p.step.before} <= drawn
 
 
 def test_generic_player_with_phases_and_bad_input():
@@ -161,7 +163,7 @@ def test_player_static_picture_is_a_filmstrip_and_text_says_what_it_shows():
     assert "application/vnd.jupyter.widget-view+json" in bundle
     w, h = png_size(png_of(bundle))
     assert w > 480 and h >= 190                            # several frames side by side
-    assert bundle["text/plain"].startswith("StepPlayer: Bowyer-Watson (10 steps")
+    assert bundle["text/plain"].startswith("StepPlayer: Bowyer-Watson (11 steps")
 
 
 # ----------------------------------------------------------------------------- picker
