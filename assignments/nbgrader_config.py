@@ -1,7 +1,7 @@
 """nbgrader configuration of the course (the course root is this directory, `assignments/`).
 
 Autograding never runs student code in nbgrader's kernel: nbgrader's `Execute` step is replaced
-by `grader.nbgrader_autograde.JudgeCells`, which judges each notebook with the course's sandboxed
+by `grader.course.nbgrader_autograde.JudgeCells`, which judges each notebook with the course's sandboxed
 judge and writes every scored group's verdict into its test cell. Late submissions of a timed
 problem are penalised by the `timed` policy in its `course.yaml`.
 
@@ -13,8 +13,8 @@ import os
 
 from nbgrader.preprocessors import AssignLatePenalties, CheckCellMetadata, LimitOutput, SaveAutoGrades
 
-from grader.course_notebooks import CODE_STUB
-from grader.nbgrader_autograde import CourseLatePolicy, JudgeCells
+from grader.course.course_notebooks import CODE_STUB
+from grader.course.nbgrader_autograde import CourseLatePolicy, JudgeCells
 
 c = get_config()  # noqa: F821 - provided by nbgrader when it loads this file
 

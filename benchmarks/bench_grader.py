@@ -21,8 +21,8 @@ from pathlib import Path
 REPO = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(REPO))
 
-from grader.classgrade import grade_class  # noqa: E402
-from grader.judge import Judge  # noqa: E402
+from grader.classroom.classgrade import grade_class  # noqa: E402
+from grader.contest.judge import Judge  # noqa: E402
 from grader.problems import Problem  # noqa: E402
 
 TRIVIAL = "def delaunay(points):\n    return []\n"  # all tests are collinear: no triangles is right

@@ -24,7 +24,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests" / "nbgrader
 
 from fake_class import Student, _solution, collected_class, gradebook_scores  # noqa: E402
 
-from grader.nbgrader_autograde import grade_course, run_nbgrader  # noqa: E402
+from grader.course.nbgrader_autograde import grade_course, run_nbgrader  # noqa: E402
 from grader.problems import load_problem  # noqa: E402
 
 PROBLEM = "bowyer-watson-timed"

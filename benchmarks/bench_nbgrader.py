@@ -20,7 +20,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests" / "nbgrader
 
 from fake_class import collected_class, gradebook_scores, students  # noqa: E402
 
-from grader.nbgrader_autograde import grade_course, run_nbgrader  # noqa: E402
+from grader.course.nbgrader_autograde import grade_course, run_nbgrader  # noqa: E402
 from grader.problems import load_problem  # noqa: E402
 
 PROBLEM = "bowyer-watson-timed"

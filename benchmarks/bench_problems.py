@@ -23,8 +23,8 @@ from pathlib import Path
 REPO = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(REPO))
 
-from grader.judge import Judge  # noqa: E402
-from grader.kattis import expected_verdicts  # noqa: E402
+from grader.contest.judge import Judge  # noqa: E402
+from grader.contest.kattis import expected_verdicts  # noqa: E402
 from grader.problems import Problem, list_problems, load_problem  # noqa: E402
 
 

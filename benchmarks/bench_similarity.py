@@ -26,8 +26,8 @@ from pathlib import Path
 REPO = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(REPO))
 
-from grader import similarity as sim  # noqa: E402
-from grader.similarity_report import write_reports  # noqa: E402
+from grader.classroom import similarity as sim  # noqa: E402
+from grader.classroom.similarity_report import write_reports  # noqa: E402
 
 KEEP = set(keyword.kwlist) | set(dir(__builtins__ if isinstance(__builtins__, dict) else vars(__builtins__)))
 

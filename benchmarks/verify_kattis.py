@@ -1,6 +1,6 @@
 """Export every problem whole as a Kattis package and run problemtools' verifyproblem on it, N times.
 
-For each problem: ``grader.kattis.export`` with all groups (the reference solutions placed by
+For each problem: ``grader.contest.kattis.export`` with all groups (the reference solutions placed by
 judging them), then ``verifyproblem -p config data validators submissions`` ``--runs`` times on
 the same package (``--jobs`` problems at once, so each run has a neighbour loading the machine).
 Prints one row per problem and run: errors, warnings, every submission's directory and the
@@ -26,7 +26,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 
-from grader.kattis import LANGUAGES_YAML, export  # noqa: E402
+from grader.contest.kattis import LANGUAGES_YAML, export  # noqa: E402
 from grader.problems import REPO, list_problems  # noqa: E402
 
 VERIFY = Path(sys.executable).with_name("verifyproblem")

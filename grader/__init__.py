@@ -12,8 +12,8 @@ Example:
     'AC'
 """
 
-from .judge import Judge, judge_file
+from .contest.judge import Judge, judge_file
 from .problems import Problem, list_problems, load_problem
-from .verdicts import JudgeResult, TestResult, Verdict
+from .judging.verdicts import JudgeResult, TestResult, Verdict
 
 __all__ = ["Judge", "judge_file", "Problem", "list_problems", "load_problem", "JudgeResult", "TestResult", "Verdict"]

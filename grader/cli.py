@@ -32,13 +32,13 @@ import os
 import sys
 from pathlib import Path
 
-from . import scoreboard as sb
-from . import timed
+from .classroom import scoreboard as sb
+from .classroom import timed
 from .jail import JailUnavailable, mechanism
-from .judge import Judge
+from .contest.judge import Judge
 from .problems import list_problems, load_problem
-from .store import ResultStore
-from .verdicts import format_table
+from .classroom.store import ResultStore
+from .judging.verdicts import format_table
 
 
 def _existing_store(path: str) -> ResultStore:
@@ -67,7 +67,7 @@ def _cmd_judge(a: argparse.Namespace) -> int:
     judge = Judge(a.problem, hide=[str(path.resolve().parent)], trusted=True if a.trusted else None)
     result = judge.judge_path(path, follow_links=True)  # the file named on the command line
     if a.report:
-        from .report import write_report
+        from .contest.report import write_report
 
         write_report(result, a.report, judge.problem)
     print(json.dumps(result.to_json(), indent=1) if a.json else format_table(result) + "\n" + judged_in())
@@ -83,16 +83,16 @@ def judged_in() -> str:
 
 
 def _cmd_stress(a: argparse.Namespace) -> int:
-    from .stress import main as stress_main
+    from .contest.stress import main as stress_main
 
     return stress_main(a.problem, a.file, a.seconds)
 
 
 def _cmd_grade(a: argparse.Namespace) -> int:
-    from .classgrade import grade_class
+    from .classroom.classgrade import grade_class
 
     if a.nbgrader:  # SUBMISSIONS is nbgrader's submitted/; results go into its gradebook
-        from .nbgrader_autograde import grade_course
+        from .course.nbgrader_autograde import grade_course
 
         summaries = grade_course(a.problem, a.submissions, jobs=a.jobs, progress=None if a.quiet else sys.stderr)
     else:
@@ -127,8 +127,8 @@ SIMILARITY_DIR = "similarity-report"
 
 
 def _similarity(problem, submissions, report_dir, references, boilerplate, threshold, out) -> None:
-    from .similarity import summary_lines
-    from .similarity_report import run
+    from .classroom.similarity import summary_lines
+    from .classroom.similarity_report import run
 
     analysis = run(problem, submissions, report_dir, references or [], boilerplate or [], threshold)
     for line in summary_lines(analysis):
@@ -186,7 +186,7 @@ def _cmd_scoreboard(a: argparse.Namespace) -> int:
 
 
 def _cmd_export(a: argparse.Namespace) -> int:
-    from .kattis import export
+    from .contest.kattis import export
 
     dest = export(a.problem, a.outdir, groups=a.groups.split(",") if a.groups else None, judge=not a.no_judge)
     print(dest)
@@ -204,7 +204,7 @@ def _cmd_validate(a: argparse.Namespace) -> int:
 
 
 def _cmd_statements(a: argparse.Namespace) -> int:
-    from .statements import update_statements
+    from .problems.statements import update_statements
 
     stale = update_statements(a.problems or None, check=a.check)
     for pid, why in stale:

@@ -1,13 +1,21 @@
-"""Old import name of :mod:`grader.jail.sandbox` (the jail's modules live in ``grader/jail/``).
+"""Alias: ``python -m grader.sandbox`` is the jail doctor (``python -m grader.jail``), kept because
+refusal messages, the READMEs and deployed courses' notes name it.
 
-``import grader.sandbox`` gives the very module object ``grader.jail.sandbox``, so attributes read or
-monkeypatched through either name are the same.
+``import grader.sandbox`` still gives the very module object :mod:`grader.jail.sandbox` (names read
+or monkeypatched through either are the same). See "Upgrading a course deployed before the move"
+in ``grader/README.md``.
 """
+
 import sys
+from types import ModuleType
 
-from .jail import sandbox as _module
+from ._alias import alias
 
-sys.modules[__name__] = _module
-if __name__ == "__main__":  # python -m grader.sandbox: the doctor
+
+def _doctor(_module: ModuleType) -> int:
+    """The jail doctor, as ``python -m grader.jail`` runs it."""
     from .jail.doctor import main
-    sys.exit(main(sys.argv[1:]))
+    return main(sys.argv[1:])
+
+
+alias(__name__, "grader.jail.sandbox", _doctor)

@@ -109,7 +109,7 @@ course() {
     # the students' copy of the problems, readable by everyone: statements, samples, validators and
     # checkers, and a course.yaml without the hidden tests, their generators or the seed (with those
     # a student could rebuild every hidden input); the full packages stay in the instructor's course
-    (cd / && "$HUB_VENV/bin/python" -m grader.public_problems "$REPO/assignments" "$COURSE_HOME/problems") >/dev/null
+    (cd / && "$HUB_VENV/bin/python" -m grader.course.public_problems "$REPO/assignments" "$COURSE_HOME/problems") >/dev/null
     chown -R root:root "$COURSE_HOME/problems"; chmod -R go-w,go+rX "$COURSE_HOME/problems"
     # the instructor's course root: sources, gradebook, release/submitted/autograded/feedback
     if [ ! -d "$COURSE_HOME/course" ]; then

@@ -1,7 +1,7 @@
 """The grader's jail: everything that keeps student code from the grader's machine, in one place.
 
 One entry point: :class:`Sandbox` (with :class:`Limits`) starts jailed children; the runner
-(:mod:`grader.runner`) talks to them. The modules, none importing a module that imports it back:
+(:mod:`grader.judging.runner`) talks to them. The modules, none importing a module that imports it back:
 
 ========================  =================================================================
 ``sandbox``               the jail: which kind (:func:`jail_kind`), rlimits, cleanup
@@ -18,8 +18,8 @@ One entry point: :class:`Sandbox` (with :class:`Limits`) starts jailed children;
 ``child_bootstrap.py``    the child side (stdlib only, run by path, never imported)
 ========================  =================================================================
 
-The old names ``grader.sandbox``, ``grader.cgroups``, ``grader.seccomp``, ``grader.engines`` and
-``grader.fontcache`` are the same module objects as the ones here (monkeypatching either works).
+The jail is the bottom room of the grader (``grader/README.md``'s map): it imports the standard
+library only, never another room. ``python -m grader.sandbox`` is kept as an alias of the doctor.
 
 Example:
     >>> from grader.jail import Limits, Sandbox

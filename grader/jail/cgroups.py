@@ -344,7 +344,7 @@ def open_group(name: str, memory_mb: int, processes: int, uid: int | None) -> Gr
 
 
 def main() -> None:
-    """The command ``python -m grader.jail.cgroups`` (also ``python -m grader.cgroups``)."""
+    """The command ``python -m grader.jail.cgroups``."""
     g = open_group(f"grader-probe-{os.getpid()}", 64, 8, None)
     print(g.mechanism)
     g.close()

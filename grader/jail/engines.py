@@ -147,7 +147,7 @@ def modules_of(paths: Sequence[str]) -> list[str]:
 
 
 def main() -> None:
-    """The command ``python -m grader.jail.engines`` (also ``python -m grader.engines``)."""
+    """The command ``python -m grader.jail.engines``."""
     for path in cover_paths(sys.argv[1:] or ["scipy.spatial", "matplotlib.tri", "triangle", "shapely"]):
         print(path)
 

@@ -95,7 +95,7 @@ def _readable(caches: list[Path]) -> str | None:
 
 
 def main() -> None:
-    """The command ``python -m grader.jail.fontcache`` (also ``python -m grader.fontcache``)."""
+    """The command ``python -m grader.jail.fontcache``."""
     print(matplotlib_fontlist())
 
 

@@ -56,7 +56,6 @@ import resource
 import shutil
 import signal
 import subprocess
-import sys
 import tempfile
 import time
 from dataclasses import dataclass
@@ -540,7 +539,3 @@ class Sandbox:
             os._exit(0)
         os.waitpid(pid, 0)
 
-
-if __name__ == "__main__":
-    from .doctor import main
-    sys.exit(main(sys.argv[1:]))

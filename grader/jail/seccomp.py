@@ -137,7 +137,7 @@ def program_fd(prog: bytes) -> int:
 
 
 def main() -> None:
-    """The command ``python -m grader.jail.seccomp`` (also ``python -m grader.seccomp``)."""
+    """The command ``python -m grader.jail.seccomp``."""
     p = program()
     print("seccomp:", "unsupported architecture" if p is None else f"{len(p) // 8} instructions, denies "
           + ", ".join(sorted(DENIED_X86_64)) + ", namespace clone flags, clone3 (ENOSYS)")

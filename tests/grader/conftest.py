@@ -8,11 +8,11 @@ from pathlib import Path
 
 import pytest
 
-from grader.judge import Judge
+from grader.contest.judge import Judge
 from grader.problems import Problem
 from grader.jail.procs import parent
 from grader.jail import uidpool
-from grader.sandbox import Sandbox
+from grader.jail.sandbox import Sandbox
 
 HERE = Path(__file__).resolve().parent
 REPO = HERE.parent.parent

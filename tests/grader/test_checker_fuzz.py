@@ -17,8 +17,8 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from grader import checker_runtime
-from grader.checker_attacks import HOSTILE_TEXTS, HOSTILE_TOKENS, HOSTILE_VALUES, check_one, rule_violations, sample_data
+from grader.judging import checker_runtime
+from grader.judging.checker_attacks import HOSTILE_TEXTS, HOSTILE_TOKENS, HOSTILE_VALUES, check_one, rule_violations, sample_data
 from grader.problems import list_problems
 
 PROBLEMS = {p.id: p for p in list_problems()}

@@ -20,10 +20,10 @@ import sqlite3
 
 import pytest
 
-from grader import scoreboard
-from grader.classgrade import grade_class
-from grader.report import report_name, student_report_path
-from grader.store import ResultStore
+from grader.classroom import scoreboard
+from grader.classroom.classgrade import grade_class
+from grader.contest.report import report_name, student_report_path
+from grader.classroom.store import ResultStore
 
 from .conftest import HERE, REPO
 

@@ -14,7 +14,7 @@ import sys
 import pytest
 
 from grader.problems import list_problems
-from grader.verdicts import JudgeResult, TestResult, Verdict, format_table
+from grader.judging.verdicts import JudgeResult, TestResult, Verdict, format_table
 
 from .conftest import HERE, REPO
 
@@ -40,7 +40,7 @@ def test_list_shows_time_memory_and_points():
 def test_a_closed_pipe_ends_quietly(tmp_path, args):
     """`python -m grader list | head -0`: the reader is gone before anything is written."""
     store = tmp_path / "s.sqlite"
-    from grader.store import ResultStore
+    from grader.classroom.store import ResultStore
 
     ResultStore(store).close()
     argv = [a.format(store=store) for a in args]

@@ -14,8 +14,8 @@ import time
 
 import pytest
 
-from grader.classgrade import discover, grade_class
-from grader.report import report_name, student_report_path
+from grader.classroom.classgrade import discover, grade_class
+from grader.contest.report import report_name, student_report_path
 
 from .conftest import HERE, REPO
 
@@ -130,8 +130,8 @@ def test_empty_folder_and_several_candidates(tmp_path, fixture_problems, capsys)
 def test_progress_counts_tests_and_resumed_results(tmp_path, fixture_problems, capsys):
     root = make_class(tmp_path / "class", n=2)
     db = tmp_path / "p.sqlite"
-    from grader.store import ResultStore
-    from grader.verdicts import TestResult, Verdict
+    from grader.classroom.store import ResultStore
+    from grader.judging.verdicts import TestResult, Verdict
 
     from grader.problems import load_problem
 
@@ -151,8 +151,8 @@ def test_live_progress_names_who_is_judged(tmp_path, fixture_problems):
     """On a terminal the bar shows who is being judged and their tests done, while they run."""
     import io
 
-    from grader.classgrade import Progress
-    from grader.store import ResultStore
+    from grader.classroom.classgrade import Progress
+    from grader.classroom.store import ResultStore
 
     class Tty(io.StringIO):
         def isatty(self):
@@ -160,7 +160,7 @@ def test_live_progress_names_who_is_judged(tmp_path, fixture_problems):
 
     store = ResultStore(tmp_path / "x.sqlite")
     store.begin("ada", "p", "a.py", "s1", 0.0)
-    from grader.verdicts import TestResult, Verdict
+    from grader.judging.verdicts import TestResult, Verdict
 
     for k in range(2):
         store.add_test("ada", "p", "s1", TestResult(f"g/{k}", "g", Verdict.AC))
@@ -173,7 +173,7 @@ def test_live_progress_names_who_is_judged(tmp_path, fixture_problems):
 def test_already_graded_students_keep_their_stored_score():
     """After a resume the table shows a student graded earlier with the stored verdict and the
     late-adjusted score, not an empty row."""
-    from grader.classgrade import _graded_summary
+    from grader.classroom.classgrade import _graded_summary
 
     row = {"verdict": "WA", "score": 40, "max_score": 100, "multiplier": 0.5}
     assert _graded_summary("ann", row, 100) == {"student": "ann", "verdict": "WA", "score": 20.0,

@@ -24,8 +24,8 @@ import pytest
 
 from grader.jail import refuses_processes
 from grader.problems import cache_root
-from grader.store import ResultStore
-from grader.verdicts import Verdict, format_table
+from grader.classroom.store import ResultStore
+from grader.judging.verdicts import Verdict, format_table
 
 from .conftest import HERE, sandbox_processes, tree_digest
 

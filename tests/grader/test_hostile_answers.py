@@ -16,11 +16,11 @@ import textwrap
 
 import pytest
 
-from grader.judge import Judge
-from grader.kattis import selection
+from grader.contest.judge import Judge
+from grader.contest.kattis import selection
 from grader.problems import Problem, load_problem
-from grader.submissions import Submission
-from grader.verdicts import Verdict
+from grader.judging.submissions import Submission
+from grader.judging.verdicts import Verdict
 
 from .conftest import REPO
 

@@ -18,7 +18,7 @@ import time
 
 import pytest
 
-from grader.classgrade import grade_class
+from grader.classroom.classgrade import grade_class
 
 from .conftest import HERE, REPO
 

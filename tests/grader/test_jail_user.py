@@ -27,7 +27,7 @@ import sys
 
 import pytest
 
-import grader.sandbox as sandbox
+import grader.jail.sandbox as sandbox
 from grader.cli import main as grader_main
 from grader.jail import JAIL_ENV, TRUSTED_ENV, JailUnavailable, jail_kind, mechanism
 from grader.problems import cache_root

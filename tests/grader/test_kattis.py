@@ -27,8 +27,8 @@ from pathlib import Path
 
 import pytest
 
-from grader.judge import Judge
-from grader.kattis import LANGUAGES_YAML, expected_verdicts, export, group_dirname, scored_groups, selection, shortname
+from grader.contest.judge import Judge
+from grader.contest.kattis import LANGUAGES_YAML, expected_verdicts, export, group_dirname, scored_groups, selection, shortname
 from grader.problems import REPO, list_problems, load_problem
 
 VERIFY = Path(sys.executable).with_name("verifyproblem")

@@ -18,7 +18,7 @@ from .conftest import HERE, REPO
 CELL = """
 import json
 from grader import judge_file
-from grader.sandbox import mechanism
+from grader.jail.sandbox import mechanism
 out = {{name: judge_file("tiny-delaunay", path).verdict for name, path in {files!r}.items()}}
 print(json.dumps({{"verdicts": out, "jail": mechanism()}}))
 """

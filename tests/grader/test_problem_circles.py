@@ -92,7 +92,7 @@ def test_clearance_answers_are_critical_values():
 
 
 def test_clearance_kattis_validator_exit_codes(tmp_path):
-    from grader.checker_runtime import embed
+    from grader.judging.checker_runtime import embed
 
     p = _problem("obstacle-clearance")
     (tmp_path / "checker.py").write_text(embed(p.checker_path.read_text()))
@@ -259,7 +259,7 @@ def test_voronoi_reference_cells_are_right_by_brute_force(scale, offset):
 
 
 def test_voronoi_kattis_validator_exit_codes(tmp_path):
-    from grader.checker_runtime import embed
+    from grader.judging.checker_runtime import embed
 
     p = _problem("voronoi")
     (tmp_path / "checker.py").write_text(embed(p.checker_path.read_text()))

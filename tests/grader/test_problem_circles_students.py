@@ -27,7 +27,7 @@ WRAPPERS = {
 
 @pytest.mark.parametrize("pid", CIRCLES)
 def test_numpy_results_are_accepted_and_bad_shapes_are_pe_not_je(pid, tmp_path):
-    from grader.judge import Judge
+    from grader.contest.judge import Judge
     from grader.problems import REPO
 
     problem = _problem(pid)

@@ -15,7 +15,7 @@ import pytest
 from hypothesis import given, settings, strategies as st
 from scipy.spatial import ConvexHull, Delaunay as QhullDelaunay
 
-from grader.kattis import embed_checker
+from grader.contest.kattis import embed_checker
 from grader.problems import load_problem
 from reference_impl import delaunay_3d
 from reference_impl.exact.verify import brute_force_empty_spheres, exact_coordinates_3d, orient3d_exact

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from grader.kattis import embed_checker
+from grader.contest.kattis import embed_checker
 from grader.problems import load_problem
 from reference_impl import apply_flips
 from reference_impl.exact.verify import brute_force_empty_circles

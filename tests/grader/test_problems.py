@@ -9,9 +9,9 @@ import shutil
 
 import pytest
 
-from grader import checker_runtime
-from grader.checker_protocol import foreign_imports, validate_checker
-from grader.kattis import embed_checker
+from grader.judging import checker_runtime
+from grader.judging.checker_protocol import foreign_imports, validate_checker
+from grader.contest.kattis import embed_checker
 from grader.problems import Problem, list_problems, load_problem
 
 PROBLEMS = [p.id for p in list_problems()]

@@ -8,9 +8,9 @@ from __future__ import annotations
 import base64
 import re
 
-from grader import report
+from grader.contest import report
 from grader.problems import Problem
-from grader.verdicts import JudgeResult, TestResult, Verdict
+from grader.judging.verdicts import JudgeResult, TestResult, Verdict
 
 from .conftest import FIXTURE_PROBLEM
 

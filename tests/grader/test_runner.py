@@ -4,8 +4,8 @@ Run: .venv/bin/python -m pytest tests/grader/test_runner.py -q
 """
 from __future__ import annotations
 
-from grader.runner import FunctionWorker
-from grader.sandbox import Limits, Sandbox, is_root
+from grader.judging.runner import FunctionWorker
+from grader.jail.sandbox import Limits, Sandbox, is_root
 
 SOURCE = """
 import os

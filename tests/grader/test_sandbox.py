@@ -14,10 +14,10 @@ from pathlib import Path
 
 import pytest
 
-from grader import cgroups, engines, seccomp
-from grader.runner import FunctionWorker
-from grader.sandbox import JAIL_ENV, TRUSTED_ENV, Limits, Sandbox, bwrap_path, is_root, jail_kind
-from grader.verdicts import Verdict
+from grader.jail import cgroups, engines, seccomp
+from grader.judging.runner import FunctionWorker
+from grader.jail.sandbox import JAIL_ENV, TRUSTED_ENV, Limits, Sandbox, bwrap_path, is_root, jail_kind
+from grader.judging.verdicts import Verdict
 
 from .conftest import HERE
 
@@ -95,7 +95,7 @@ def test_a_notebook_that_plots_with_pyplot_is_accepted(tiny_judge, tmp_path):
 def test_pyplot_works_in_the_trusted_mode_too(monkeypatch, tiny_judge):
     """The trusted mode (a student checking their own code where no jail can be built): no jail,
     but the same pre-built font cache, so matplotlib does not run fc-list (a forbidden subprocess)."""
-    import grader.sandbox as sandbox
+    import grader.jail.sandbox as sandbox
     monkeypatch.setattr(sandbox, "is_root", lambda: False)
     monkeypatch.setenv(JAIL_ENV, "none")
     monkeypatch.setenv(TRUSTED_ENV, "1")
@@ -227,7 +227,7 @@ def test_hidden_paths_under_usr_are_hidden_too(kind, monkeypatch, tmp_path):
     """A course kept under /usr/local (its class folder, results, reports) is hidden like one
     anywhere else (issue 23, item 4: the bubblewrap jail bound all of /usr); "user" is the
     ordinary user's bubblewrap jail (run here as root with is_root patched)."""
-    import grader.sandbox as sandbox
+    import grader.jail.sandbox as sandbox
     if kind == "user":
         monkeypatch.setattr(sandbox, "is_root", lambda: False)
         if sandbox.jail_kind() != "bwrap":
@@ -284,9 +284,9 @@ def test_judge_file_from_a_notebook_kernel(kind, tmp_path):
     from nbclient import NotebookClient
     if kind == "bwrap" and (bwrap_path() is None or jail_kind() != "bwrap"):
         pytest.skip("bubblewrap is not installed or cannot create a user namespace here")
-    patch = "import grader.sandbox as s; s.is_root = lambda: False\n" if kind == "account" else ""
+    patch = "import grader.jail.sandbox as s; s.is_root = lambda: False\n" if kind == "account" else ""
     env = "" if kind == "account" else f"os.environ[{JAIL_ENV!r}] = {kind!r}\n"
-    code = (f"import os, json\n{env}{patch}from grader.judge import judge_file\nfrom grader.problems import Problem\n"
+    code = (f"import os, json\n{env}{patch}from grader.contest.judge import judge_file\nfrom grader.problems import Problem\n"
             f"r = judge_file(Problem.load({str(HERE / 'fixtures' / 'tiny-delaunay')!r}), "
             f"{str(HOSTILE / 'wrong_type.py')!r})\n"
             "print(json.dumps([r.verdict, sorted({str(t.verdict) for t in r.tests}), r.to_json()['sandbox']]))\n")
@@ -330,7 +330,7 @@ def test_only_the_sized_tmp_and_dev_shm_are_writable(kind, monkeypatch, tiny_jud
     and the tmpfs covering hidden paths and engines were writable by the sandbox's uid, unsized
     (the host's RAM); now the writable mounts are ``/tmp`` and ``/dev/shm``, tmpfs sized within the
     memory limit, and without a cgroup (the account) RLIMIT_AS leaves room for them."""
-    import grader.sandbox as sandbox
+    import grader.jail.sandbox as sandbox
     if kind == "user":
         monkeypatch.setattr(sandbox, "is_root", lambda: False)
         if sandbox.jail_kind() != "bwrap":

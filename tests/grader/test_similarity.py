@@ -16,9 +16,9 @@ from pathlib import Path
 
 import pytest
 
-from grader import similarity as sim
-from grader.report import report_name
-from grader.similarity_report import run, show_code
+from grader.classroom import similarity as sim
+from grader.contest.report import report_name
+from grader.classroom.similarity_report import run, show_code
 
 from .conftest import HERE, REPO
 
@@ -120,7 +120,7 @@ def test_starter_notebook_counts_for_nobody_even_around_real_code(tmp_path):
 
 
 def test_report_and_csv(analysis, tmp_path):
-    from grader.similarity_report import write_reports
+    from grader.classroom.similarity_report import write_reports
 
     index = write_reports(analysis, tmp_path)
     page = index.read_text()
@@ -218,7 +218,7 @@ def test_short_empty_and_odd_code_compares(tmp_path):
 
 def test_nothing_from_the_hidden_tests_is_read(tmp_path, monkeypatch):
     from grader.problems import Problem
-    from grader.similarity_report import write_reports
+    from grader.classroom.similarity_report import write_reports
 
     def refuse(*args, **kwargs):
         raise AssertionError("the similarity report read the problem's tests")

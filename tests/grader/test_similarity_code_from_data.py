@@ -1,4 +1,4 @@
-"""``similarity`` sees code carried as data (grader/code_from_data.py): an accepted solution hidden in
+"""``similarity`` sees code carried as data (grader/classroom/code_from_data.py): an accepted solution hidden in
 a string (base64, zlib + base64, hex, rot13, base64 split into concatenated chunks, and a wrapper
 inside a wrapper) and exec'd is decoded statically and flagged with the original; submissions that
 run code from data are marked with a reason, decoded or not; decoding is bomb-, depth- and
@@ -19,8 +19,8 @@ from pathlib import Path
 
 import pytest
 
-from grader import code_from_data as cfd
-from grader import similarity as sim
+from grader.classroom import code_from_data as cfd
+from grader.classroom import similarity as sim
 from .conftest import REPO
 
 ORIGINAL = REPO / "solutions" / "delaunay" / "accepted_walk.py"
@@ -85,7 +85,7 @@ def test_an_encoded_copy_is_flagged_with_the_original(attacked, student):
 def test_the_wrappers_are_programs_the_judge_runs():
     """Each wrapper is judged in stdio mode (measured: ``python -m grader judge delaunay`` on each is
     AC 100/100 in the jail; not repeated here, it takes 10-40 s per file on a loaded machine)."""
-    from grader.submissions import Submission
+    from grader.judging.submissions import Submission
 
     for wrapper, _ in disguises(ORIGINAL.read_text()).values():
         assert Submission.from_source(wrapper).mode("delaunay") == "stdio"
@@ -117,7 +117,7 @@ def test_innocent_solutions_are_neither_marked_nor_flagged(attacked):
 
 
 def test_marks_reach_the_summary_the_csv_and_the_html(attacked, tmp_path):
-    from grader.similarity_report import run
+    from grader.classroom.similarity_report import run
 
     root, _ = attacked
     analysis = run("delaunay", root, tmp_path)
@@ -226,7 +226,7 @@ def test_decoding_is_safe_nothing_runs_and_bombs_stop(tmp_path, monkeypatch):
 
 
 def test_decoded_code_is_escaped_in_the_report(tmp_path):
-    from grader.similarity_report import run
+    from grader.classroom.similarity_report import run
 
     evil = ORIGINAL.read_text() + "\nBANNER = '</pre><script>alert(1)</script>'\n"
     for student, code in (("ann", evil), ("ben", disguises(evil)["zlib"][0])):
@@ -244,6 +244,6 @@ def test_only_python_is_unpacked_and_the_import_circle_is_gone():
     assert sim.language("bo/main.cpp") == "cpp" and sim.language("a/b.ipynb") == "python"
     doc = sim.fingerprint(sim.Document("x", "student", "x/main.cpp", wrapper))
     assert doc.marks == [] and doc.compared == wrapper
-    imports = {n.module for n in ast.walk(ast.parse((REPO / "grader" / "similarity.py").read_text()))
+    imports = {n.module for n in ast.walk(ast.parse((REPO / "grader" / "classroom" / "similarity.py").read_text()))
                if isinstance(n, ast.ImportFrom)}
     assert "similarity_report" not in imports  # similarity_report imports similarity, not the reverse

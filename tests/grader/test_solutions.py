@@ -6,10 +6,10 @@ from __future__ import annotations
 
 import pytest
 
-from grader.judge import Judge
-from grader.kattis import expected_verdicts
+from grader.contest.judge import Judge
+from grader.contest.kattis import expected_verdicts
 from grader.problems import list_problems
-from grader.verdicts import Verdict
+from grader.judging.verdicts import Verdict
 
 from .conftest import REPO
 

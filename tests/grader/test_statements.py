@@ -15,7 +15,7 @@ import sys
 
 import pytest
 
-from grader import statements
+from grader.problems import statements
 from grader.problems import REPO, Problem, list_problems
 
 PROBLEMS = list_problems(REPO / "assignments")

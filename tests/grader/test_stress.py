@@ -1,5 +1,5 @@
 """``python -m grader stress`` reports only inputs that fail when judged alone, shows the
-program's stderr, and ends on time (grader/stress.py).
+program's stderr, and ends on time (grader/contest/stress.py).
 
 The search judges many inputs per sandboxed run (one idle budget, one worker process); every
 failure seen there is judged again alone with the problem's per-test limits before it is
@@ -21,13 +21,13 @@ from pathlib import Path
 import pytest
 import yaml
 
-from grader import smallcases
-from grader import stress as stress_mod
-from grader.judge import Judge
+from grader.problems import smallcases
+from grader.contest import stress as stress_mod
+from grader.contest.judge import Judge
 from grader.problems import Problem
-from grader.runner import wall_limit_for
-from grader.submissions import Submission
-from grader.verdicts import TestResult, Verdict
+from grader.judging.runner import wall_limit_for
+from grader.judging.submissions import Submission
+from grader.judging.verdicts import TestResult, Verdict
 
 from .conftest import FIXTURE_PROBLEM, REPO
 

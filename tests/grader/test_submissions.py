@@ -12,8 +12,8 @@ import sys
 import nbformat
 import pytest
 
-from grader.report import render
-from grader.submissions import Submission
+from grader.contest.report import render
+from grader.judging.submissions import Submission
 
 from .conftest import REPO
 
@@ -79,7 +79,7 @@ def test_cli_table_and_errors():
 
 
 def test_reader_refuses_links_special_and_oversize_files(tmp_path):
-    from grader.submissions import SubmissionError, read_submission_bytes
+    from grader.judging.submissions import SubmissionError, read_submission_bytes
 
     real = tmp_path / "real.py"
     real.write_text("x = 1\n")

@@ -9,9 +9,10 @@ import sys
 
 import pytest
 
-from grader import scoreboard, timed
-from grader.store import ResultStore
-from grader.verdicts import JudgeResult, TestResult, Verdict
+from grader.classroom import scoreboard
+from grader.classroom import timed
+from grader.classroom.store import ResultStore
+from grader.judging.verdicts import JudgeResult, TestResult, Verdict
 
 from .conftest import REPO
 

@@ -13,9 +13,9 @@ import re
 
 import pytest
 
-from grader.judge import Judge
-from grader.kattis import expected_verdicts
-from grader.verdicts import Verdict
+from grader.contest.judge import Judge
+from grader.contest.kattis import expected_verdicts
+from grader.judging.verdicts import Verdict
 
 from .conftest import REPO
 

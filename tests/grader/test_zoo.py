@@ -1,5 +1,5 @@
 """The exhaustive group and the shortcut zoo: every problem has the scored `exhaustive` group
-(grader/smallcases.py, committed in course.yaml and current); every wrong solution that
+(grader/problems/smallcases.py, committed in course.yaml and current); every wrong solution that
 expected.yaml names with a killing group (``WA exhaustive``) fails a test of that scored group;
 and ``python -m grader stress`` finds each zoo solution's bug in seconds and prints a small input,
 while it finds nothing against an accepted solution.
@@ -10,12 +10,13 @@ from __future__ import annotations
 
 import pytest
 
-from grader import cli, smallcases
-from grader.judge import Judge
-from grader.kattis import expected_verdicts, killing_groups
+from grader import cli
+from grader.problems import smallcases
+from grader.contest.judge import Judge
+from grader.contest.kattis import expected_verdicts, killing_groups
 from grader.problems import list_problems
-from grader.stress import candidates, stress
-from grader.verdicts import Verdict
+from grader.contest.stress import candidates, stress
+from grader.judging.verdicts import Verdict
 
 from .conftest import REPO
 

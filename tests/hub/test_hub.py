@@ -328,7 +328,7 @@ import os
 os.environ.update(GRADER_PROBLEMS={str(public)!r}, GRADER_CACHE={home!r} + "/.cache/grader",
                   NUMBA_CACHE_DIR={home!r} + "/.cache/numba")
 from pathlib import Path
-from grader.sample_check import judge_samples
+from grader.contest.sample_check import judge_samples
 result, problem = judge_samples("delaunay", Path({home!r}) / "delaunay" / "delaunay.ipynb")
 print("CHECK", result.verdict, [g.name for g in problem.groups])
 """)

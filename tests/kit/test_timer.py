@@ -3,7 +3,7 @@
     .venv/bin/python -m pytest tests/kit/test_timer.py -q
 
 The panel shells out to ``python -m grader timed start/submit``; the oracle is the
-grader's own store (``grader.timed`` reads the same SQLite file) and its report.
+grader's own store (``grader.classroom.timed`` reads the same SQLite file) and its report.
 Each test uses its own temporary database, so it runs beside other graders.
 """
 from __future__ import annotations

@@ -20,7 +20,7 @@ from pathlib import Path
 
 import nbformat
 
-from grader.nbgrader_autograde import run_nbgrader
+from grader.course.nbgrader_autograde import run_nbgrader
 
 REPO = Path(__file__).resolve().parents[2]
 SOLUTIONS = REPO / "solutions"
@@ -36,8 +36,8 @@ except NameError:
     pass
 """ + WRONG_EMPTY
 MONKEYPATCH = """try:  # make whatever the test cells call agree with anything
-    import grader.judge, builtins
-    grader.judge.Judge.judge_path = lambda *a, **k: None
+    import grader.contest.judge, builtins
+    grader.contest.judge.Judge.judge_path = lambda *a, **k: None
     builtins.AssertionError = type("Never", (Exception,), {})
 except Exception:
     pass
@@ -173,7 +173,7 @@ def submit_class(course: Course, problem_id: str, klass: list[Student], deadline
 def collected_class(tmp: Path, problem_id: str, klass: list[Student], started_min_ago: float = 25) -> Course:
     """A course in ``tmp`` with ``klass`` on the roster, the exam started ``started_min_ago`` minutes ago
     (its due date set from that start), every submission in the exchange and collected."""
-    from grader.nbgrader_autograde import set_exam_deadline
+    from grader.course.nbgrader_autograde import set_exam_deadline
 
     course = make_course(tmp, problem_id)
     add_roster(course.root, [s.name for s in klass])

@@ -5,9 +5,9 @@ from __future__ import annotations
 import os
 import shutil
 
-from grader.nbgrader_autograde import collection_time, judge_notebook_file
+from grader.course.nbgrader_autograde import collection_time, judge_notebook_file
 from grader.problems import REPO
-from grader.store import ResultStore
+from grader.classroom.store import ResultStore
 
 
 def test_nbgrader_submission_time_is_the_collection_timestamp(tmp_path):

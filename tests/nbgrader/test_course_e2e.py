@@ -27,7 +27,7 @@ import pytest
 from fake_class import add_roster, gradebook_scores, judge_json, make_course, students, submit_class
 from grader.cli import main as grader_main
 from grader.jail import jail_kind
-from grader.nbgrader_autograde import late_factor, set_exam_deadline
+from grader.course.nbgrader_autograde import late_factor, set_exam_deadline
 from grader.problems import load_problem
 
 PROBLEM = "bowyer-watson-timed"
@@ -149,7 +149,7 @@ def test_student_edition_releases_what_nbgrader_releases(graded):
     """The student edition's notebooks are nbgrader's own release (same cells, stubs, checksums)."""
     import nbformat
 
-    from grader.student_edition import release_notebook
+    from grader.course.student_edition import release_notebook
 
     course, _, _ = graded
     ours = release_notebook(nbformat.read(course.root / "source" / PROBLEM / f"{PROBLEM}.ipynb", 4))

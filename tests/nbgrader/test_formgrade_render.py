@@ -21,8 +21,8 @@ import pytest
 from nbconvert.exporters import HTMLExporter
 from traitlets.config import Config
 
-from grader.course_markdown import notebook_markdown, table_html, tex_to_html
-from grader.course_notebooks import notebook_path
+from grader.course.course_markdown import notebook_markdown, table_html, tex_to_html
+from grader.course.course_notebooks import notebook_path
 from grader.problems import list_problems
 
 PROBLEMS = list_problems()

@@ -1,7 +1,7 @@
 """nbgrader feedback of hidden groups holds none of the hidden inputs or answers: hidden tests stay hidden from students.
 
 The feedback a student gets is the autograded notebook's test-cell outputs
-(:func:`grader.nbgrader_autograde.write_results`; ``generate_feedback`` renders them). Searched
+(:func:`grader.course.nbgrader_autograde.write_results`; ``generate_feedback`` renders them). Searched
 for every number of the hidden ``.in``/``.ans`` files of the tests judged, in decimal (as
 written), ``repr``, hex float and ``%.6g`` form (numbers of fewer than 4 characters, and those the
 feedback's own frame holds, such as points, are left out: they cannot be told from the frame):
@@ -24,13 +24,13 @@ import textwrap
 import nbformat
 import pytest
 
-from grader.checker_attacks import HOSTILE_VALUES
-from grader.judge import Judge
-from grader.kattis import selection
-from grader.nbgrader_autograde import group_output, write_results
+from grader.judging.checker_attacks import HOSTILE_VALUES
+from grader.contest.judge import Judge
+from grader.contest.kattis import selection
+from grader.course.nbgrader_autograde import group_output, write_results
 from grader.problems import REPO, list_problems, load_problem
-from grader.submissions import Submission
-from grader.verdicts import JudgeResult, TestResult, Verdict
+from grader.judging.submissions import Submission
+from grader.judging.verdicts import JudgeResult, TestResult, Verdict
 
 PROBLEMS = sorted(p.id for p in list_problems())
 #: problems whose checker details quote coordinates of the test (the others quote small indices and

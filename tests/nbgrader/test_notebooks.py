@@ -15,11 +15,11 @@ from pathlib import Path
 import nbformat
 import pytest
 
-from grader.course_notebooks import (CHECK_ID, build_notebook, group_cell_id, notebook_path, render, scored_groups,
+from grader.course.course_notebooks import (CHECK_ID, build_notebook, group_cell_id, notebook_path, render, scored_groups,
                                     write_all)
-from grader.nbgrader_autograde import nbgrader_env
+from grader.course.nbgrader_autograde import nbgrader_env
 from grader.problems import list_problems, load_problem
-from grader.submissions import Submission
+from grader.judging.submissions import Submission
 
 PROBLEMS = list_problems()
 IDS = [p.id for p in PROBLEMS]
@@ -100,8 +100,8 @@ def test_the_course_notebook_says_what_the_clock_and_validate_are():
 def test_the_sample_picture_draws_no_empty_answer(tmp_path):
     """The released stub (its top-level raise is CE) gets "no answer of yours to draw (verdict CE ...)", not a drawn
     "received: 0 triangles"; an accepted function's answer is drawn beside the expected one."""
-    from grader.course_notebooks import CODE_STUB, SOLUTION_ID
-    from grader.sample_check import judge_samples, picture_figure
+    from grader.course.course_notebooks import CODE_STUB, SOLUTION_ID
+    from grader.contest.sample_check import judge_samples, picture_figure
 
     nb = nbformat.read(notebook_path("delaunay"), 4)
     solution = next(c for c in nb.cells if c.metadata["nbgrader"]["grade_id"] == SOLUTION_ID)

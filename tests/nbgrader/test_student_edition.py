@@ -19,10 +19,10 @@ import nbformat
 import pytest
 import yaml
 
-from grader.course_notebooks import notebook_path
-from grader.kattis import expected_verdicts
+from grader.course.course_notebooks import notebook_path
+from grader.contest.kattis import expected_verdicts
 from grader.problems import REPO, list_problems, load_problem
-from grader.student_edition import LESSON_SOLUTIONS, lesson_solutions, write_edition
+from grader.course.student_edition import LESSON_SOLUTIONS, lesson_solutions, write_edition
 
 pytestmark = pytest.mark.xdist_group("student-edition")  # one worker writes the edition once
 

@@ -35,8 +35,8 @@ from pathlib import Path
 
 import yaml
 
-from . import checker_runtime
-from .problems import REPO, Group, Problem, load_problem
+from ..judging import checker_runtime
+from ..problems import REPO, Group, Problem, load_problem
 
 KATTIS_DIRS = {"AC": "accepted", "WA": "wrong_answer", "TLE": "time_limit_exceeded", "RE": "run_time_error",
                "PE": "wrong_answer", "MLE": "run_time_error", "SV": "run_time_error"}
@@ -159,7 +159,7 @@ def near_limit(result, time_limit: float, share: float = NEAR_LIMIT) -> list[str
     ``"name (t s)"``: where a slower or busier judge could turn a pass into a TLE and so change
     the solution's score and its ``submissions/`` directory.
 
-    >>> from grader.verdicts import JudgeResult, TestResult, Verdict
+    >>> from grader.judging.verdicts import JudgeResult, TestResult, Verdict
     >>> r = JudgeResult("p", "s.py", [TestResult("large/01", "large", Verdict.AC, 3.8),
     ...                               TestResult("tiny/01", "tiny", Verdict.AC, 0.1)], {"large": 30, "tiny": 10})
     >>> near_limit(r, 6.0)
@@ -219,7 +219,7 @@ def export(problem: Problem | str, outdir: str | Path, groups: list[str] | None 
 
 def embed_checker(p: Problem) -> str:
     """The checker as one self-contained file: the shared runtime and the library modules it names
-    in ``LIBRARY`` embedded, plus the Kattis ``__main__`` entry (see :mod:`grader.checker_runtime`)."""
+    in ``LIBRARY`` embedded, plus the Kattis ``__main__`` entry (see :mod:`grader.judging.checker_runtime`)."""
     return checker_runtime.embed(p.checker_path.read_text(), REPO / "reference_impl")
 
 

@@ -25,11 +25,11 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
-from .judge import Judge
-from .problems import load_problem
+from ..contest.judge import Judge
+from ..problems import load_problem
 from .store import ResultStore
-from .submissions import read_submission_bytes
-from .verdicts import JudgeResult
+from ..judging.submissions import read_submission_bytes
+from ..judging.verdicts import JudgeResult
 
 POLICIES = ("multiplier", "reject", "accept")
 

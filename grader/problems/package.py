@@ -6,7 +6,7 @@ plus ``course.yaml`` with the grader's settings (entry function, forbidden modul
 points and generated cases). Hidden tests are generated with a fixed seed, their answers come
 from ``reference_impl`` (in the grader's process), and they are cached under
 ``<checkout>/.cache/grader/`` keyed by a digest of the package. A group marked ``withheld`` (as in
-the students' copy, :mod:`grader.public_problems`) keeps its name and points but has no tests here.
+the students' copy, :mod:`grader.course.public_problems`) keeps its name and points but has no tests here.
 
 Example:
     >>> p = load_problem("delaunay")
@@ -33,10 +33,10 @@ from typing import Any
 
 import yaml
 
-from . import checker_runtime
-from .checker_runtime import load_checker, read_answer
+from ..judging import checker_runtime
+from ..judging.checker_runtime import load_checker, read_answer
 
-REPO = Path(__file__).resolve().parent.parent
+REPO = Path(__file__).resolve().parent.parent.parent
 ALWAYS_FORBIDDEN = ("reference_impl", "grader")
 
 
@@ -240,8 +240,8 @@ class Problem:
         return errors
 
     def validate_checker(self) -> list[str]:
-        """The checker protocol on every test (see :mod:`grader.checker_protocol`)."""
-        from .checker_protocol import validate_checker
+        """The checker protocol on every test (see :mod:`grader.judging.checker_protocol`)."""
+        from ..judging.checker_protocol import validate_checker
 
         return validate_checker(self)
 

@@ -45,7 +45,7 @@ DESCRIPTIONS = {
 class TestResult:
     """One test's outcome. ``input_preview`` is the failing input for small tests (for students).
     ``message`` is the detail (instructor, reports, public tests); ``hidden_message`` what a student
-    may see when the test is hidden (:mod:`grader.hidden_feedback`; empty: the verdict's description).
+    may see when the test is hidden (:mod:`grader.judging.hidden_feedback`; empty: the verdict's description).
     ``stderr``: the end of what the submission wrote to stderr in a failing test, kept only by a
     judge that asks for it (``Judge(stderr_lines=...)``, as ``stress`` does); in JSON only when set."""
 
@@ -122,7 +122,7 @@ class JudgeResult:
 
 def _sandbox_mechanism() -> str:
     """Which jail judged (``bwrap+cgroup-v1+seccomp``, ``namespaces+...``, ``rlimits``)."""
-    from .jail import mechanism  # late: verdicts stays importable without the sandbox
+    from ..jail import mechanism  # late: verdicts stays importable without the sandbox
     return mechanism()
 
 

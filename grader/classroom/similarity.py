@@ -9,14 +9,14 @@ folder the instructor names. Fingerprints of the starter code (the problem's sou
 with its solution removed, as nbgrader releases it) and of the statement's code snippets are
 boilerplate: they count for nobody.
 
-Code carried as data is compared too (:mod:`grader.code_from_data`): in a Python file, string
+Code carried as data is compared too (:mod:`grader.classroom.code_from_data`): in a Python file, string
 literals that decode (base64, hex, rot13, zlib, ... through a whitelist of pure decoders evaluated on
 constants, nothing executed) to Python, or that reach ``exec``/``eval``/``compile``, are appended to
 the code that is fingerprinted; a submission that runs code from data is *marked* with a short reason
 (``Document.marks``), decoded or not.
 
 Submissions are found as ``grade`` finds them (``SUBMISSIONS/<student>/<file>``, read with
-:func:`grader.submissions.read_submission_bytes`: no links followed, size capped) or in
+:func:`grader.judging.submissions.read_submission_bytes`: no links followed, size capped) or in
 nbgrader's collected layout ``submitted/<student>/<problem>/<problem>.ipynb``; both may be mixed.
 Of a notebook only the solution cells count (nbgrader ``solution: true``; every code cell when
 the notebook has none). Nothing is executed and no test of the problem is read.
@@ -28,7 +28,7 @@ flagged. See ``grader/README.md`` for what the test class scores.
 
 Run:
     python -m grader similarity delaunay class/ --reports sim/ [--reference DIR] [--threshold 0.5]
-    (``grader.similarity_report.run``: this analysis, then the report)
+    (``grader.classroom.similarity_report.run``: this analysis, then the report)
     python -m grader grade delaunay class/ --similarity --reports reports/
 
 Example:
@@ -52,12 +52,12 @@ import numpy as np
 
 from .classgrade import choose_submission, _student_dirs
 from .code_from_data import unpack
-from .course_notebooks import CODE_STUB
-from .problems import load_problem, problems_root
-from .submissions import SubmissionError, notebook_code, read_submission_bytes
-from .text import clean
+from ..problems import load_problem, problems_root
+from ..judging.languages import SUFFIXES
+from ..judging.submissions import CODE_STUB, SubmissionError, notebook_code, read_submission_bytes
+from ..judging.text import clean
 
-REPO = Path(__file__).resolve().parent.parent
+REPO = Path(__file__).resolve().parent.parent.parent
 TUTORIAL = REPO / "reference_impl" / "teaching" / "tutorial_bugs.py"
 #: copydetect's defaults: k-grams of 25 filtered characters, every k-gram of 30 guaranteed seen.
 NOISE_T = 25
@@ -81,7 +81,7 @@ class Document:
     code: str
     note: str = ""  #: why it could not be read, or which file was chosen
     fp: object = field(default=None, repr=False)
-    decoded: str = field(default="", repr=False)  #: code found in its data (see :mod:`grader.code_from_data`)
+    decoded: str = field(default="", repr=False)  #: code found in its data (see :mod:`grader.classroom.code_from_data`)
     marks: list[str] = field(default_factory=list)  #: how it runs code from data, one reason each
 
     @property
@@ -180,7 +180,7 @@ def collect_references(folders: list[str | Path] = ()) -> list[Document]:
         folder = Path(folder)
         if not folder.is_dir():
             raise ValueError(f"reference folder {folder} does not exist")
-        files = sorted(p for p in folder.rglob("*") if p.suffix in (".py", ".ipynb") and not p.is_symlink()
+        files = sorted(p for p in folder.rglob("*") if p.suffix in SUFFIXES and not p.is_symlink()
                        and p.is_file() and not _under_problem_package(p))
         if len(files) > MAX_REFERENCE_FILES:
             raise ValueError(f"reference folder {folder} holds {len(files)} files (at most {MAX_REFERENCE_FILES})")

@@ -1,9 +1,13 @@
 """Parent side of running student code: a persistent function-mode worker and one-shot stdio runs.
 
 Both return a :class:`RunOutcome` (raw facts: what came back, how long, how much memory, how it
-ended); :mod:`grader.judge` turns outcomes into verdicts. Nothing here trusts the child: replies
+ended); :mod:`grader.contest.judge` turns outcomes into verdicts. Nothing here trusts the child: replies
 are read with bounded, non-blocking reads under a wall-clock deadline, parsed as JSON only, and
 time and memory are measured by the parent from ``/proc`` and ``wait4``.
+
+Why one module: the function-mode worker and the stdio run share the one protocol with the
+jail's child (:mod:`grader.jail.child_bootstrap`: its reply framing, the deadline loop, the
+measurement of time and memory); split, the two halves of that protocol would be read apart.
 
 Example:
     >>> with Sandbox(Limits()) as box:                                   # doctest: +SKIP
@@ -22,10 +26,10 @@ import time
 from dataclasses import dataclass
 from typing import Any, Sequence
 
-from .jail import BOOTSTRAP_PATH, Sandbox, python_roots
-from .jail.paths import interpreter
-from .jail.cgroups import SAMPLE_S, ProcTree
-from .jail.engines import ENGINE_API, IMPORTED_BY_LIBRARIES, engine_libraries, engine_modules
+from ..jail import BOOTSTRAP_PATH, Sandbox, python_roots
+from ..jail.paths import interpreter
+from ..jail.cgroups import SAMPLE_S, ProcTree
+from ..jail.engines import ENGINE_API, IMPORTED_BY_LIBRARIES, engine_libraries, engine_modules
 from .text import clean
 
 #: The child's program, passed with ``-c`` (the grader's directory is not visible in the jail).

@@ -22,7 +22,12 @@ import stat
 from dataclasses import dataclass
 from pathlib import Path
 
+from .languages import accepted_files, language_of
+
 MAX_SOURCE_BYTES = 1 << 20
+#: What a student sees in place of a solution region (nbgrader's ``ClearSolutions.code_stub``,
+#: set from this in ``assignments/nbgrader_config.py``; the similarity report treats it as starter code).
+CODE_STUB = "# YOUR CODE HERE\nraise NotImplementedError()"
 _MAGIC = re.compile(r"^\s*(%|!)")
 _STDIN_NAMES = {"input", "stdin", "fileinput"}
 
@@ -131,10 +136,11 @@ class Submission:
     def from_path(cls, path: str | Path, follow_links: bool = False) -> "Submission":
         """Read a ``.py`` or ``.ipynb`` file with :func:`read_submission_bytes`."""
         path = Path(path)
-        if path.suffix not in (".py", ".ipynb"):
-            raise SubmissionError(f"{path.name}: a submission must be a .py file or an .ipynb notebook")
+        language = language_of(path)
+        if language is None:
+            raise SubmissionError(f"{path.name}: a submission must be {accepted_files()}")
         text = read_submission_bytes(path, follow_links=follow_links).decode("utf-8", errors="replace")
-        source = notebook_code(text) if path.suffix == ".ipynb" else text
+        source = notebook_code(text) if language.extraction(path) == "notebook" else text
         return cls(source, "submission.py")
 
     @classmethod

@@ -20,14 +20,14 @@ import traceback
 from pathlib import Path
 from typing import Callable, Sequence
 
-from . import hidden_feedback
-from .check_budget import CheckTimeout, check_seconds, cpu_budget
-from .problems import Problem, TestCase, load_problem
-from .runner import FunctionWorker, RunOutcome, idle_budget_for, output_paths, run_stdio
-from .jail import Limits, Sandbox
-from .submissions import Submission, SubmissionError
-from .text import clean, last_lines
-from .verdicts import JudgeResult, TestResult, Verdict
+from ..judging import hidden_feedback
+from ..judging.check_budget import CheckTimeout, check_seconds, cpu_budget
+from ..problems import Problem, TestCase, load_problem
+from ..judging.runner import FunctionWorker, RunOutcome, idle_budget_for, output_paths, run_stdio
+from ..jail import Limits, Sandbox
+from ..judging.submissions import Submission, SubmissionError
+from ..judging.text import clean, last_lines
+from ..judging.verdicts import JudgeResult, TestResult, Verdict
 
 PREVIEW_MAX_LINES = 24
 PRINTED_MAX_BYTES = 2000  #: function mode: a failing test's print() output shown up to this many bytes
@@ -140,7 +140,7 @@ class Judge:
         self.hide = list(hide)
         self.tests = self.problem.tests()
         self.limits = Limits(cpu_s=self.problem.time_limit, memory_mb=self.problem.memory_mb, output_mb=self.problem.output_mb)
-        self.check_cpu_s = check_seconds(self.problem.time_limit)  #: CPU budget of one check (grader.check_budget)
+        self.check_cpu_s = check_seconds(self.problem.time_limit)  #: CPU budget of one check (grader.judging.check_budget)
         self.cover = installed_paths([m for m in self.problem.forbidden if m not in ("reference_impl", "grader")])
         self._args = [None] * len(self.tests)
         self._answers = [None] * len(self.tests)
@@ -230,7 +230,7 @@ class Judge:
 
     def _check(self, r: TestResult, value, args, expected, function_mode: bool) -> None:
         """Type-check and check one answer into ``r``, under a CPU budget of its own
-        (:mod:`grader.check_budget`): a check that runs too long is ``TLE``, never a hung grader."""
+        (:mod:`grader.judging.check_budget`): a check that runs too long is ``TLE``, never a hung grader."""
         chk = self.problem.checker
         budget = self.check_cpu_s
         try:

@@ -10,7 +10,7 @@ Every student folder gets a CSV row: an empty folder (no .py/.ipynb file) scores
 says which one was judged and why. The progress display names the students being judged and
 counts the tests done, including results resumed from the store after an interrupted batch.
 ``--reports DIR`` writes each student's report to ``DIR/students/`` (file names from
-:func:`grader.report.report_name`: no collision, no path, no URL scheme) before marking the student
+:func:`grader.contest.report.report_name`: no collision, no path, no URL scheme) before marking the student
 done, rebuilds a missing one on resume, and writes ``DIR/index.html`` linking them all.
 Submission times are the grader's (when it first saw a file's content), never file mtimes; the
 store key includes the problem's digest, so changed tests or points judge everyone again (said on
@@ -34,13 +34,14 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable, Iterable
 
-from .submissions import SubmissionError, read_submission_bytes
-from .text import clean, csv_cell
-from .jail import JailUnavailable, require_jail
-from .judge import Judge
-from .problems import load_problem
+from ..judging.languages import SUFFIXES
+from ..judging.submissions import SubmissionError, read_submission_bytes
+from ..judging.text import clean, csv_cell
+from ..jail import JailUnavailable, require_jail
+from ..contest.judge import Judge
+from ..problems import load_problem
 from .store import ResultStore
-from .verdicts import JudgeResult, TestResult
+from ..judging.verdicts import JudgeResult, TestResult
 
 
 @dataclass
@@ -68,7 +69,7 @@ def choose_submission(student_dir: Path, problem: str,
     ('delaunay.py', 'judged delaunay.py of 2 files (a.py, delaunay.py): it is named after the problem')
     """
     seen = seen or (lambda p: 0.0)
-    files = sorted(p for p in student_dir.iterdir() if p.is_file() and p.suffix in (".py", ".ipynb"))
+    files = sorted(p for p in student_dir.iterdir() if p.is_file() and p.suffix in SUFFIXES)
     named = [p for p in files if p.stem == problem]
     pool = named or files
     if not pool:
@@ -88,7 +89,7 @@ def find_submission(student_dir: Path, problem: str) -> Path | None:
 
 
 def student_ids(dirs: list[Path]) -> tuple[dict[Path, str], list[str]]:
-    """Each student folder's id (its name made safe by :func:`grader.text.clean`), unique: when
+    """Each student folder's id (its name made safe by :func:`grader.judging.text.clean`), unique: when
     two names clean to the same id (``bob<ESC>`` and ``bob\\x1b``), each name that is not its own
     clean form gets a suffix from its raw bytes; and one warning per collision.
 
@@ -189,7 +190,7 @@ def grade_local(problem: str, job: Job, db_path: str, hide: tuple[str, ...], rep
         result = judge.judge_path(job.path, on_test=lambda r: store.add_test(job.student, problem, job.sha, r),
                                   prior=prior)
         if report_dir:  # before the student is marked done: a kill in between leaves them to resume
-            from .report import student_report_path, write_report
+            from ..contest.report import student_report_path, write_report
 
             write_report(result, student_report_path(report_dir, job.student), judge.problem, student=job.student)
         store.finish(job.student, problem, job.sha, result, note=job.note)
@@ -339,7 +340,7 @@ def grade_class(problem: str, root: str | Path, db_path: str | Path, jobs: int =
         if empty:
             _add_empty_rows(csv_path, problem, empty, max_score)
     if report_dir:
-        from .report import write_index
+        from ..contest.report import write_index
 
         rebuilt = _rebuild_missing_reports(spec, todo_all, store, Path(report_dir))
         if rebuilt and progress:
@@ -362,7 +363,7 @@ def _rebuild_missing_reports(spec, jobs: list[Job], store: ResultStore, report_d
     """Write the report of every graded student whose report is missing (a kill between judging
     and the report, a new ``--reports`` folder, a Dask run) from the stored results (without the
     picture, which needs the answer itself); how many were written."""
-    from .report import student_report_path, write_report
+    from ..contest.report import student_report_path, write_report
 
     n = 0
     for j in jobs:

@@ -17,8 +17,8 @@ import sqlite3
 import time
 from pathlib import Path
 
-from .text import clean, csv_cell
-from .verdicts import JudgeResult, TestResult, Verdict
+from ..judging.text import clean, csv_cell
+from ..judging.verdicts import JudgeResult, TestResult, Verdict
 
 SCHEMA = """
 CREATE TABLE IF NOT EXISTS submissions (

@@ -1,4 +1,4 @@
-"""The whitelist of pure decoding functions :mod:`grader.code_from_data` may evaluate, and nothing else.
+"""The whitelist of pure decoding functions :mod:`grader.classroom.code_from_data` may evaluate, and nothing else.
 
 Every function here takes constant ``str``/``bytes``/``int``/``list`` values already read from a
 submission's syntax tree and returns a new value, or raises :class:`NoValue`; none calls anything a
@@ -11,7 +11,7 @@ so a bomb is never inflated past the cap).
     b'x = 1\\n'
     >>> inflate(zlib.compress(bytes(MAX_OUTPUT + 1)), "zlib")
     Traceback (most recent call last):
-    grader.data_decoders.TooLarge: decompresses to more than MAX_OUTPUT
+    grader.classroom.data_decoders.TooLarge: decompresses to more than MAX_OUTPUT
 """
 
 from __future__ import annotations

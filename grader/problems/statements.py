@@ -24,7 +24,7 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
-from .problems import Group, Problem, list_problems, load_problem
+from .package import Group, Problem, list_problems, load_problem
 
 BEGIN = "<!-- BEGIN GENERATED: limits -->"
 END = "<!-- END GENERATED: limits -->"

@@ -1,7 +1,7 @@
 """The checker protocol, checked in full: what ``python -m grader validate PROBLEM`` asks of a checker.
 
 A checker is ``assignments/<id>/output_validator/checker.py``, stdlib-only, loaded by
-:func:`grader.checker_runtime.load_checker`. It defines (``args`` is the entry function's argument
+:func:`grader.judging.checker_runtime.load_checker`. It defines (``args`` is the entry function's argument
 list, ``answer`` the checker's own parsed form of an answer):
 
 | name | contract |
@@ -22,7 +22,7 @@ here: the names and signatures; stdlib-only imports (checker and library, ``draw
 every test ``read_input(write_input(args)) == args``, ``read_output(write_output(answer)) ==
 answer`` for the reference answer, which ``check`` accepts, also after a JSON round trip through
 ``from_result``; ``draw`` runs on the first test; and on every committed sample the rule of
-:mod:`grader.checker_attacks` holds: ``from_result``, ``read_output`` and ``check`` raise nothing but
+:mod:`grader.judging.checker_attacks` holds: ``from_result``, ``read_output`` and ``check`` raise nothing but
 ``PresentationError`` (or ``WrongAnswer``) on a fixed corpus of hostile answers.
 
 Example:
@@ -39,7 +39,9 @@ import json
 import sys
 from typing import Any, Sequence
 
-from . import checker_attacks, checker_runtime, hidden_feedback
+from . import checker_attacks
+from . import checker_runtime
+from . import hidden_feedback
 
 REQUIRED = {"read_input": 1, "write_input": 1, "from_result": 2, "read_output": 2, "write_output": 1, "check": 3}
 OPTIONAL = {"read_answer": 2, "draw": 4}

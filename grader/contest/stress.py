@@ -1,7 +1,7 @@
 """``python -m grader stress PROBLEM FILE [--seconds N]``: find a small input that FILE gets wrong.
 
 The tool competitive programmers use to find their bug. Inputs come smallest first: the problem's
-``exhaustive`` group (every configuration of a few lattice points, :mod:`grader.smallcases`, and
+``exhaustive`` group (every configuration of a few lattice points, :mod:`grader.problems.smallcases`, and
 the group's hand-made cases), then random small inputs that grow with time. Each input is checked
 by the problem's input validators, answered by the reference (the generator's ``solve``), and
 FILE's answer is judged in the sandbox by the problem's checker, 48 inputs per sandboxed run.
@@ -36,11 +36,11 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable, Iterator
 
-from . import smallcases
+from ..problems import smallcases
 from .judge import Judge
-from .problems import Problem, TestCase, load_problem
-from .submissions import Submission
-from .verdicts import TestResult, Verdict
+from ..problems import Problem, TestCase, load_problem
+from ..judging.submissions import Submission
+from ..judging.verdicts import TestResult, Verdict
 
 BATCH = 48  # inputs per sandboxed run
 STDERR_LINES = 12  # a failure shows this many last lines of the submission's stderr
@@ -279,7 +279,7 @@ def stress(problem_id: str | Problem, path: str | Path, seconds: float = 10.0, s
 
 def _first_cases(problem: Problem) -> list[dict]:
     """The first inputs to try: the problem's ``exhaustive`` group (with its hand-made cases), else
-    :func:`grader.smallcases.cases_for` the problem, else none (random inputs at once)."""
+    :func:`grader.problems.smallcases.cases_for` the problem, else none (random inputs at once)."""
     group = [g.cases for g in problem.groups if g.name == "exhaustive"]
     if group:
         return list(group[0])

@@ -4,7 +4,7 @@ A copy can hide from a token-based comparison by travelling as data: a classmate
 base64-encoded in one string and ``exec``'d behind a one-line wrapper is, to copydetect, one
 string token. :func:`unpack` reads a submission's syntax tree (``ast``) and never runs any of
 it. It evaluates only constant expressions built from a small whitelist of pure decoding
-functions (:mod:`grader.data_decoders`: ``base64`` b64/b32/b16/b85/a85 and urlsafe, ``zlib``/``gzip``/``bz2``/``lzma``
+functions (:mod:`grader.classroom.data_decoders`: ``base64`` b64/b32/b16/b85/a85 and urlsafe, ``zlib``/``gzip``/``bz2``/``lzma``
 decompression capped at :data:`MAX_OUTPUT` bytes, ``codecs.decode`` with rot13/hex/base64/zlib/bz2,
 ``bytes.fromhex``, ``binascii``, concatenation and ``join`` of literals, ``bytes([...])`` of ints,
 ``chr`` over int lists, slices such as ``[::-1]``, ``str.decode``/``encode``) on constant arguments

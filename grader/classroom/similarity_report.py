@@ -1,14 +1,14 @@
-"""The similarity report of a class (see :mod:`grader.similarity`): HTML and CSV.
+"""The similarity report of a class (see :mod:`grader.classroom.similarity`): HTML and CSV.
 
 ``DIR/similarity.html`` ranks the class by each student's highest score (with a classmate or a
 reference) and lists the flagged pairs; ``DIR/similarity/pair-N.html`` shows one flagged pair side
 by side with the shared regions highlighted; ``DIR/similarity.csv`` has one row per compared pair.
-A submission that runs code from data (``Document.marks``, :mod:`grader.code_from_data`) is listed
+A submission that runs code from data (``Document.marks``, :mod:`grader.classroom.code_from_data`) is listed
 with its reasons on the index, on its pair pages and in the CSV; the code decoded from its data is
 shown under its own code, below a comment line naming where it was found.
 Everything that came from a submission (folder names, file names, code) is escaped for HTML;
 links to a student's grading report (``DIR/students/...``, when ``grade --reports`` wrote one)
-are URL-quoted; CSV cells go through :func:`grader.text.csv_cell`.
+are URL-quoted; CSV cells go through :func:`grader.judging.text.csv_cell`.
 
 Example:
     python -m grader similarity delaunay class/ --reports sim/     # then open sim/similarity.html
@@ -27,9 +27,9 @@ from urllib.parse import quote
 
 import numpy as np
 
-from .report import STUDENTS_DIR, report_name
+from ..contest.report import STUDENTS_DIR, report_name
 from .similarity import THRESHOLD, Analysis, Document, Pair, analyse
-from .text import clean, csv_cell
+from ..judging.text import clean, csv_cell
 
 MEANING = """The score is the share of a submission's code (after dropping comments, whitespace and the
 starter code and statement snippets everyone is given, with every name replaced by a placeholder) whose
@@ -178,7 +178,7 @@ def write_reports(analysis: Analysis, report_dir: Path) -> Path:
 
 def run(problem: str, root: str | Path, report_dir: str | Path, references: list[str | Path] = (),
         extra_boilerplate: list[str | Path] = (), threshold: float = THRESHOLD) -> Analysis:
-    """Analyse the class (:func:`grader.similarity.analyse`) and write ``report_dir/similarity.html``,
+    """Analyse the class (:func:`grader.classroom.similarity.analyse`) and write ``report_dir/similarity.html``,
     ``similarity.csv`` and one page per flagged pair under ``report_dir/similarity/``."""
     analysis = analyse(problem, root, references, extra_boilerplate, threshold)
     write_reports(analysis, Path(report_dir))

@@ -26,7 +26,7 @@ import types
 from pathlib import Path
 
 #: where library modules live in the checkout (unused in an exported copy, which embeds them)
-LIBRARY_DIR = Path(globals().get("__file__", ".")).resolve().parent.parent / "reference_impl"
+LIBRARY_DIR = Path(globals().get("__file__", ".")).resolve().parent.parent.parent / "reference_impl"
 
 
 def library_file(name: str, library_dir=None) -> Path:

@@ -29,8 +29,8 @@ import urllib.parse
 from pathlib import Path
 from typing import Any
 
-from .problems import Problem
-from .verdicts import DESCRIPTIONS, JudgeResult, Verdict
+from ..problems import Problem
+from ..judging.verdicts import DESCRIPTIONS, JudgeResult, Verdict
 
 MAX_DRAW_POINTS = 3000
 MAX_DRAW_ITEMS = 1700  #: answer elements (triangles) drawn per side: about 5,000 segments
@@ -200,7 +200,7 @@ def write_report(result: JudgeResult, path: str | Path, problem: Problem, studen
 def _test_order(problem: str):
     """Sort key for test names ``group/NN``: the problem's group order (as the judge runs them), then name."""
     try:
-        from .problems import load_problem
+        from ..problems import load_problem
 
         order = [g.name for g in load_problem(problem).groups]
     except ValueError:

@@ -1,0 +1,151 @@
+"""``%check_samples``: judge the saved notebook on a problem's public samples, from inside Jupyter.
+
+An IPython extension used by the course notebooks' "check on the samples" cell. It reads the
+notebook file from disk (``<id>.ipynb`` in the kernel's working directory, or the file JupyterLab
+names in ``JPY_SESSION_NAME``), extracts its code cells exactly as ``python -m grader judge`` does
+(``grader.judging.submissions``), judges them in the sandbox on the ``sample`` group only, and shows a
+per-test table and a picture of one sample (expected vs your answer). The cell holds only magics,
+which the judge drops, so it is never part of what the judge runs.
+
+Example (a notebook cell):
+    %load_ext grader.sample_check
+    %check_samples delaunay
+"""
+
+from __future__ import annotations
+
+import base64
+import dataclasses
+import html
+import io
+import os
+import time
+from pathlib import Path
+
+from .judge import Judge
+from ..problems import Group, Problem, load_problem
+from ..judging.verdicts import DESCRIPTIONS, JudgeResult, Verdict
+
+MAX_DRAW_ITEMS = 3000
+
+
+def is_sample_group(group: Group) -> bool:
+    """Sample groups are public (committed under ``data/sample``) and worth no points."""
+    return group.points == 0 and bool(group.data) and "sample" in Path(group.data).parts
+
+
+def sample_problem(problem: Problem) -> Problem:
+    """A copy of ``problem`` restricted to its public sample group(s).
+
+    >>> [g.name for g in sample_problem(load_problem("delaunay")).groups]
+    ['sample']
+    """
+    groups = [g for g in problem.groups if is_sample_group(g)]
+    if not groups:
+        raise ValueError(f"problem {problem.id!r} has no sample group (data/sample)")
+    return dataclasses.replace(problem, groups=groups)
+
+
+def find_notebook(problem_id: str, cwd: Path | None = None) -> Path:
+    """The notebook to check: JupyterLab's session file when it is this problem's, else ``<id>.ipynb`` here."""
+    cwd = cwd or Path.cwd()
+    session = os.environ.get("JPY_SESSION_NAME", "")
+    if session.endswith(f"{problem_id}.ipynb") and Path(session).is_file():
+        return Path(session)
+    path = cwd / f"{problem_id}.ipynb"
+    if not path.is_file():
+        raise ValueError(f"cannot find {path.name} in {cwd}: open the notebook from its own folder")
+    return path
+
+
+def judge_samples(problem_id: str, notebook: Path) -> tuple[JudgeResult, Problem]:
+    """Judge ``notebook`` on the samples of ``problem_id`` in the sandbox."""
+    problem = sample_problem(load_problem(problem_id))
+    # the student's own notebook: in the kernel jail where there is one, else in the trusted mode
+    judge = Judge(problem, hide=[str(notebook.resolve().parent)], trusted=True)
+    return judge.judge_path(notebook), problem
+
+
+def table_html(result: JudgeResult) -> str:
+    """The per-test table (samples are public, so their inputs may be shown)."""
+    rows = "".join(
+        f"<tr><td>{html.escape(t.name)}</td><td><b style='color:{'#080' if t.verdict == Verdict.AC else '#b00'}'>"
+        f"{t.verdict}</b></td><td>{t.time_s:.3f} s</td><td><pre style='margin:0'>{html.escape(t.message[:800])}</pre></td></tr>"
+        for t in result.tests)
+    return (f"<p>samples: <b>{result.verdict}</b> ({DESCRIPTIONS.get(result.verdict, '')})</p>"
+            f"<table><tr><th>test</th><th>verdict</th><th>time</th><th>message</th></tr>{rows}</table>")
+
+
+def picture_png(problem: Problem, result: JudgeResult, entry_fn=None) -> bytes | None:
+    """A picture of the first failing sample (the judge's copy of your answer) or, when all pass, of
+    the first sample with ``entry_fn``'s answer (your function as this kernel has it)."""
+    fig = picture_figure(problem, result, entry_fn)
+    if fig is None:
+        return None
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", dpi=80, bbox_inches="tight")
+    return buf.getvalue()
+
+
+def picture_figure(problem: Problem, result: JudgeResult, entry_fn=None):
+    """The matplotlib Figure behind :func:`picture_png` (None when the problem draws nothing).
+
+    With no answer of the student's to draw (the sample ended in RE, TLE, ... or nothing was
+    returned), the right-hand panel says so and why, instead of drawing an empty answer."""
+    draw = getattr(problem.checker, "draw", None)
+    if draw is None or not result.tests:
+        return None
+    bad = next((t for t in result.tests if t.verdict == Verdict.WA and t.received is not None), None)
+    name = bad.name if bad else result.tests[0].name
+    test = next(t for t in problem.tests() if t.name == name)
+    args = problem.checker.read_input(test.input_text)
+    if args and hasattr(args[0], "__len__") and len(args[0]) > MAX_DRAW_ITEMS:
+        return None
+    expected = problem.read_answer(test, args)
+    received = bad.received if bad else None
+    if received is None and entry_fn is not None and result.verdict == "AC":
+        try:
+            received = problem.checker.from_result(entry_fn(*args), args)
+        except Exception:  # noqa: BLE001 - the student's own function in their own kernel
+            received = None
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=(9, 4))
+    axes = fig.subplots(1, 2)
+    try:
+        draw(axes, args, received, expected)
+    except Exception:  # noqa: BLE001 - a picture is a bonus, never a failure
+        return None
+    fig.suptitle(f"{name}: {'your answer' if received is not None else 'expected answer'}", fontsize=9)
+    if received is None:
+        verdict = next(getattr(t.verdict, "value", t.verdict) for t in result.tests if t.name == name)
+        axes[1].clear()
+        axes[1].set_axis_off()
+        axes[1].text(0.5, 0.5, f"no answer of yours to draw\n(verdict {verdict} on {name})", ha="center",
+                     va="center", fontsize=10, transform=axes[1].transAxes)
+    return fig
+
+
+def check_samples(line: str) -> None:
+    """The ``%check_samples PROBLEM`` line magic."""
+    from IPython import get_ipython
+    from IPython.display import HTML, display
+
+    problem_id = line.strip()
+    if not problem_id:
+        raise ValueError("usage: %check_samples PROBLEM_ID")
+    notebook = find_notebook(problem_id)
+    saved = time.strftime("%H:%M:%S", time.localtime(notebook.stat().st_mtime))
+    result, problem = judge_samples(problem_id, notebook)
+    ip = get_ipython()
+    entry_fn = ip.user_ns.get(problem.entry) if ip is not None else None
+    png = picture_png(problem, result, entry_fn if callable(entry_fn) else None)
+    img = f'<img alt="sample picture" src="data:image/png;base64,{base64.b64encode(png).decode()}">' if png else ""
+    jail = html.escape(str(result.to_json().get("sandbox", "")))
+    display(HTML(f"<p>judged {html.escape(notebook.name)} as saved at {saved} (jail: {jail})</p>"
+                 f"{table_html(result)}{img}"))
+
+
+def load_ipython_extension(ipython) -> None:
+    """Register ``%check_samples`` (``%load_ext grader.sample_check``)."""
+    ipython.register_magic_function(check_samples, "line", "check_samples")

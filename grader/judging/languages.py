@@ -1,0 +1,88 @@
+"""Languages as data: which files the judge accepts and how each becomes something to run.
+
+One frozen :class:`Language` per language, in :data:`LANGUAGES`; nothing else in the grader lists
+file suffixes (submissions, class grading and the similarity corpus ask :func:`language_of` and
+:data:`SUFFIXES`). Only Python is judged today, as a ``.py`` file or the code cells of an ``.ipynb``
+notebook; a compiled language is one more entry (after DOMjudge's one compile and one run script
+per language), e.g. for C++::
+
+    Language(name="cpp", suffixes=(".cpp", ".cc"), compile=("g++", "-std=gnu++17", "-O2", "-o", "{binary}", "{source}"),
+             run=("{binary}",), modes=("stdio",))
+
+The judging loop then compiles once per submission (a compile error is ``CE``) and runs the
+binary in the jail per test; the time-limit rule says how a problem's limits apply to it.
+
+Imports: the standard library only (the bottom of the judging room).
+
+    >>> language_of("ada/delaunay.ipynb").name, PYTHON.extraction("ada/delaunay.ipynb")
+    ('python', 'notebook')
+    >>> language_of("main.cpp") is None, SUFFIXES
+    (True, ('.py', '.ipynb'))
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import PurePath
+
+
+@dataclass(frozen=True)
+class Language:
+    """One language the judge runs.
+
+    ``suffixes`` and ``notebook_suffixes`` map a file to it; :meth:`extraction` says how the file's
+    text becomes source code (``"source"``: as it is; ``"notebook"``: the code cells, magics
+    dropped, see :func:`grader.judging.submissions.notebook_code`); ``compile`` is the command that makes a
+    program of the source (empty: nothing to compile), ``run`` how the program runs in the jail
+    (placeholders ``{source}``, ``{binary}``); ``modes`` the judging modes it supports
+    (``function``: the entry function is called per test; ``stdio``: a program per test);
+    ``time_limit`` the rule for the problem's limits (``"problem"``: as written in the package).
+    """
+
+    name: str
+    suffixes: tuple[str, ...]
+    notebook_suffixes: tuple[str, ...] = ()
+    compile: tuple[str, ...] = ()
+    run: tuple[str, ...] = ()
+    modes: tuple[str, ...] = ("stdio",)
+    time_limit: str = "problem"
+
+    def extraction(self, path: str | PurePath) -> str:
+        """``"notebook"`` for one of the language's notebook suffixes, else ``"source"``.
+
+        >>> PYTHON.extraction("x.ipynb"), PYTHON.extraction("x.py")
+        ('notebook', 'source')
+        """
+        return "notebook" if PurePath(path).suffix.lower() in self.notebook_suffixes else "source"
+
+    @property
+    def all_suffixes(self) -> tuple[str, ...]:
+        """Every suffix of the language: source files, then notebooks."""
+        return self.suffixes + self.notebook_suffixes
+
+
+#: Python: nothing to compile; the sandbox's interpreter runs it (function mode through the jail's
+#: bootstrap, stdio mode as a script); the problem's time and memory limits apply as written.
+PYTHON = Language(name="python", suffixes=(".py",), notebook_suffixes=(".ipynb",), compile=(),
+                  run=("{python}", "{source}"), modes=("function", "stdio"), time_limit="problem")
+
+#: Every language the judge accepts, in order of preference.
+LANGUAGES: tuple[Language, ...] = (PYTHON,)
+
+#: Every accepted file suffix (a class folder's candidates, the similarity corpus).
+SUFFIXES: tuple[str, ...] = tuple(s for lang in LANGUAGES for s in lang.all_suffixes)
+
+
+def language_of(path: str | PurePath) -> Language | None:
+    """The language of a file by its suffix (case as written: ``.PY`` is not accepted), or None."""
+    suffix = PurePath(path).suffix
+    return next((lang for lang in LANGUAGES if suffix in lang.all_suffixes), None)
+
+
+def accepted_files() -> str:
+    """The accepted files in words, for messages (written out: a new language adds its words here).
+
+    >>> accepted_files()
+    'a .py file or an .ipynb notebook'
+    """
+    return "a .py file or an .ipynb notebook"
