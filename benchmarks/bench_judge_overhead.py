@@ -46,7 +46,7 @@ the problem, discovering the class, loading the tests), ``1st extra`` (student 1
 student: the pool worker's Judge reading and parsing every test, first-time costs) and ``tail``
 (after the last line: exit). Separately, one judge command's start-up alone: ``python -c pass``,
 ``python -c 'import grader'``, ``load_problem(id)`` in-process, ``python -m grader list``, and
-one whole ``python -m grader judge`` of the 30-test empty-work submission (the SPEC §8 target:
+one whole ``python -m grader judge`` of the 30-test empty-work submission (the course's target:
 under 1.5 s of judge overhead for 30 function-mode tests). C++: a compile line of its own,
 not counted in the ratio (none yet: no accepted ``.cpp`` exists).
 
@@ -655,7 +655,7 @@ def main(argv: list[str] | None = None) -> dict[str, Any]:
                       fmt(min(j.cpu for j in judges)), fmt(judge30["wall_median"], 2)])
         print(table(["command", "", "", "cpu s", "min s", "wall s"], srows))
         print(f"  the 30-test judge: the submission's own time {judge30['own_median']:.3f} s, so the judge's overhead "
-              f"is {judge30['cpu_median'] - judge30['own_median']:.3f} s (SPEC §8 target: under 1.5 s)")
+              f"is {judge30['cpu_median'] - judge30['own_median']:.3f} s (the course's target: under 1.5 s of judge overhead for 30 function-mode tests)")
         print("  load_problem per problem: " + ", ".join(f"{k} {v:.3f}" for k, v in loads.items()))
         print(f"  parsing the {len(problems)} course.yaml files alone (in-process): {yaml_cpu['safe_load']:.3f} s with "
               f"yaml.safe_load (pure Python), {yaml_cpu['csafe_load']:.3f} s with libyaml's CSafeLoader "

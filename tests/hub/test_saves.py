@@ -1,4 +1,4 @@
-"""No save is lost (SPEC §7): the single-user servers' configuration, deploy/jupyterhub/jupyter_server_config.py.
+"""No save is lost, whoever reads the notebook during a save: the single-user servers' configuration, deploy/jupyterhub/jupyter_server_config.py.
 
 A plain ``jupyter server --config=deploy/jupyterhub/jupyter_server_config.py`` (no hub needed) serves a
 notebook that one thread saves 200 times over the contents API while two threads read it over the

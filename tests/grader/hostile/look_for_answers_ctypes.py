@@ -6,7 +6,7 @@ libc = ctypes.CDLL(None)
 
 
 def delaunay(points):
-    for path in (b"/work/main/assignments/delaunay/problem.yaml", b"/work/main/grader/judge.py",
+    for path in (b"/work/main/assignments/delaunay/problem.yaml", b"/work/main/grader/contest/judge.py",
                  b"/root/.bashrc"):
         if libc.open(path, 0) >= 0:
             raise RuntimeError("could open " + path.decode())
