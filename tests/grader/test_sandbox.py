@@ -32,6 +32,18 @@ def _jail(monkeypatch, kind: str) -> None:
     monkeypatch.setenv(JAIL_ENV, kind)
 
 
+def _jail_or_user(monkeypatch, kind: str) -> None:
+    """Root's jail ``kind``, or with "user" the ordinary user's bubblewrap jail (run as root with
+    ``is_root`` patched)."""
+    import grader.jail.sandbox as sandbox
+    if kind == "user":
+        monkeypatch.setattr(sandbox, "is_root", lambda: False)
+        if sandbox.jail_kind() != "bwrap":
+            pytest.skip("bubblewrap cannot create a user namespace here")
+    else:
+        _jail(monkeypatch, kind)
+
+
 @pytest.fixture
 def other_checkout():
     """A second copy of the course elsewhere on the machine, readable by everyone (like a real
@@ -227,13 +239,7 @@ def test_hidden_paths_under_usr_are_hidden_too(kind, monkeypatch, tmp_path):
     """A course kept under /usr/local (its class folder, results, reports) is hidden like one
     anywhere else (issue 23, item 4: the bubblewrap jail bound all of /usr); "user" is the
     ordinary user's bubblewrap jail (run here as root with is_root patched)."""
-    import grader.jail.sandbox as sandbox
-    if kind == "user":
-        monkeypatch.setattr(sandbox, "is_root", lambda: False)
-        if sandbox.jail_kind() != "bwrap":
-            pytest.skip("bubblewrap cannot create a user namespace here")
-    else:
-        _jail(monkeypatch, kind)
+    _jail_or_user(monkeypatch, kind)
     course = Path(f"/usr/local/share/grader-hidden-{os.getpid()}")
     (course / "submitted" / "bob").mkdir(parents=True)
     secret = course / "submitted" / "bob" / "delaunay.py"
@@ -330,13 +336,7 @@ def test_only_the_sized_tmp_and_dev_shm_are_writable(kind, monkeypatch, tiny_jud
     and the tmpfs covering hidden paths and engines were writable by the sandbox's uid, unsized
     (the host's RAM); now the writable mounts are ``/tmp`` and ``/dev/shm``, tmpfs sized within the
     memory limit, and without a cgroup (the account) RLIMIT_AS leaves room for them."""
-    import grader.jail.sandbox as sandbox
-    if kind == "user":
-        monkeypatch.setattr(sandbox, "is_root", lambda: False)
-        if sandbox.jail_kind() != "bwrap":
-            pytest.skip("bubblewrap cannot create a user namespace here")
-    else:
-        _jail(monkeypatch, kind)
+    _jail_or_user(monkeypatch, kind)
     course = Path(f"/usr/local/share/grader-hidden-{os.getpid()}")  # covered by a tmpfs inside /usr
     course.mkdir(parents=True)
     try:
@@ -348,4 +348,5 @@ def test_only_the_sized_tmp_and_dev_shm_are_writable(kind, monkeypatch, tiny_jud
     finally:
         shutil.rmtree(course, ignore_errors=True)
     assert (out.status, out.value) == ("ok", [["/dev/shm", "tmpfs", 8], ["/tmp", "tmpfs", 32]]), out
-    assert address_mb == (216 if kind == "user" else 256 + sandbox.ADDRESS_HEADROOM_MB)
+    from grader.jail.sandbox import ADDRESS_HEADROOM_MB
+    assert address_mb == (216 if kind == "user" else 256 + ADDRESS_HEADROOM_MB)
