@@ -106,18 +106,18 @@ def test_lesson_03_player_picker_and_quiz_work_in_chromium(lab, page):
     # -- the step player: press "next"
     player = page.locator(".kit-step-player").first
     player.scroll_into_view_if_needed()
-    player.locator(".widget-html", has_text="step 1/10").wait_for(timeout=30_000)
+    player.locator(".widget-html", has_text="step 1/11").wait_for(timeout=30_000)
     picture = player.locator("svg.kit-canvas").first
     picture.locator("path").first.wait_for(state="attached", timeout=30_000)
     before = picture.inner_html()
     player.get_by_role("button", name="next").click()
-    player.locator(".widget-html", has_text="step 2/10").wait_for(timeout=30_000)
+    player.locator(".widget-html", has_text="step 2/11").wait_for(timeout=30_000)
     page.wait_for_function("([svg, old]) => svg.innerHTML !== old", arg=[picture.element_handle(), before],
                            timeout=30_000)               # the browser redrew the step
     assert kernel_says(page, "print(player.index)", "1") == "1"
     for k in range(3, 9):           # on to step 8: the bad triangles of the last point
         player.get_by_role("button", name="next").click()
-        player.locator(".widget-html", has_text=f"step {k}/10").wait_for(timeout=30_000)
+        player.locator(".widget-html", has_text=f"step {k}/11").wait_for(timeout=30_000)
     assert kernel_says(page, "print(player.index, player.current_line)", "7 bad") == "7 bad"
     player.screenshot(path=str(SHOTS / "lesson03-player.png"))
 
