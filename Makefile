@@ -10,7 +10,7 @@ PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed
 LAB_OVERRIDES := $(VENV)/share/jupyter/lab/settings/overrides.json
 
-.PHONY: setup warm demo test lab instructor bench clean chromium bubblewrap hub hub-install hub-down
+.PHONY: setup warm demo test lab instructor bench clean chromium bubblewrap gxx hub hub-install hub-down
 
 setup: $(STAMP) $(LAB_OVERRIDES)
 
@@ -39,7 +39,7 @@ demo: warm
 # Test files run in parallel (pytest-xdist); a module that builds one expensive fixture (the
 # nbgrader class, the JupyterLab server) stays on one worker through its xdist_group mark.
 JOBS ?= 2
-test: warm chromium bubblewrap
+test: warm chromium bubblewrap gxx
 	$(PY) -m pytest -n $(JOBS) --dist loadgroup
 
 # JupyterLab refuses to run as root without --allow-root (course containers and CI run as root).
@@ -60,6 +60,10 @@ apt_need = command -v $(1) >/dev/null 2>&1 || { command -v apt-get >/dev/null 2>
 # The browser test drives Debian's chromium (Playwright never downloads a browser here).
 chromium:
 	@$(call apt_need,chromium,chromium,tests/browser will be skipped)
+
+# The C++ reference solutions (solutions/<id>/*.cpp, benchmarks/bench_cpp_solutions.py) compile with Debian's g++.
+gxx:
+	@$(call apt_need,g++,g++,the C++ solutions' test will be skipped)
 
 # The jail (grader/jail/): without bubblewrap root grades in the fallback namespaces jail and an
 # ordinary account refuses to grade (python -m grader.sandbox says what this machine gives).
