@@ -40,7 +40,7 @@ demo: warm
 # nbgrader class, the JupyterLab server) stays on one worker through its xdist_group mark.
 JOBS ?= 2
 test: warm chromium bubblewrap gxx
-	$(PY) -m pytest -n $(JOBS) --dist loadgroup
+	$(PY) -m pytest -n $(JOBS) --dist loadgroup --durations=40
 
 # JupyterLab refuses to run as root without --allow-root (course containers and CI run as root).
 # LAB_ARGS passes extra options, e.g. make lab LAB_ARGS="--no-browser --port=8899".

@@ -36,7 +36,9 @@ class Language:
     program of the source (empty: nothing to compile), ``run`` how the program runs in the jail
     (placeholders ``{source}``, ``{binary}``); ``modes`` the judging modes it supports
     (``function``: the entry function is called per test; ``stdio``: a program per test);
-    ``time_limit`` the rule for the problem's limits (``"problem"``: as written in the package).
+    ``time_limit`` the rule for the problem's limits (``"problem"``: as written in the package;
+    ``"per-language"``: the problem's limit for this language,
+    :meth:`grader.problems.package.Problem.time_limit_for`).
     """
 
     name: str
@@ -55,6 +57,14 @@ class Language:
         """
         return "notebook" if PurePath(path).suffix.lower() in self.notebook_suffixes else "source"
 
+    def compile_command(self, source: str = "{source}", binary: str = "{binary}") -> tuple[str, ...]:
+        """The compile command with its placeholders filled (empty when nothing is compiled).
+
+        >>> " ".join(CPP.compile_command("main.cpp", "main"))
+        'g++ -std=gnu++17 -O2 -pipe -static -s -o main main.cpp'
+        """
+        return tuple(a.replace("{source}", source).replace("{binary}", binary) for a in self.compile)
+
     @property
     def all_suffixes(self) -> tuple[str, ...]:
         """Every suffix of the language: source files, then notebooks."""
@@ -65,6 +75,15 @@ class Language:
 #: bootstrap, stdio mode as a script); the problem's time and memory limits apply as written.
 PYTHON = Language(name="python", suffixes=(".py",), notebook_suffixes=(".ipynb",), compile=(),
                   run=("{python}", "{source}"), modes=("function", "stdio"), time_limit="problem")
+
+#: C++: Debian's g++ with the flags of Kattis, DOMjudge and CMS (GNU C++17, optimised, static, so
+#: that the run jail needs no shared libraries); stdio mode only (the problem's text format on
+#: stdin and stdout); the time limit is the problem's C++ limit (course.yaml ``time_limits: {cpp: ..}``,
+#: set from the accepted C++ solution's slowest test, see ``benchmarks/bench_cpp_solutions.py``).
+#: Defined here for statements and the Kattis export; judged once it is in :data:`LANGUAGES`.
+CPP = Language(name="cpp", suffixes=(".cpp", ".cc", ".cxx"),
+               compile=("g++", "-std=gnu++17", "-O2", "-pipe", "-static", "-s", "-o", "{binary}", "{source}"),
+               run=("{binary}",), modes=("stdio",), time_limit="per-language")
 
 #: Every language the judge accepts, in order of preference.
 LANGUAGES: tuple[Language, ...] = (PYTHON,)

@@ -163,6 +163,21 @@ def _load_module(path: Path, name: str) -> ModuleType:
     return module
 
 
+def _time_limits(problem: str, raw: Any) -> dict[str, float]:
+    """course.yaml's ``time_limits`` (language name -> seconds), validated."""
+    if raw is None:
+        return {}
+    if not isinstance(raw, dict):
+        raise ValueError(f"problem {problem!r}: course.yaml 'time_limits' must map a language to seconds, got {raw!r}")
+    out = {}
+    for lang, seconds in raw.items():
+        if isinstance(seconds, bool) or not isinstance(seconds, (int, float)) or not 0 < seconds <= 600:
+            raise ValueError(f"problem {problem!r}: time_limits[{lang!r}] must be a number of seconds in (0, 600], "
+                             f"got {seconds!r}")
+        out[str(lang)] = float(seconds)
+    return out
+
+
 @dataclass
 class Problem:
     """A loaded problem package; see the module docstring."""
@@ -180,6 +195,9 @@ class Problem:
     generator_path: Path | None
     seed: int
     timed: dict
+    #: per-language time limits (course.yaml ``time_limits: {cpp: 1.0}``); a language not named
+    #: here gets ``time_limit`` (problem.yaml's, the limit of the Python solutions and of Kattis)
+    time_limits: dict[str, float] = field(default_factory=dict)
 
     @classmethod
     def load(cls, path: str | Path) -> "Problem":
@@ -208,7 +226,17 @@ class Problem:
             groups=groups, checker_path=path / course.get("checker", "output_validator/checker.py"),
             generator_path=(path / course["generator"]) if course.get("generator") else None,
             seed=int(course.get("seed", 0)), timed=dict(course.get("timed") or {}),
+            time_limits=_time_limits(path.name, course.get("time_limits")),
         )
+
+    def time_limit_for(self, language: str) -> float:
+        """The CPU-time limit per test for a language (its name in :mod:`grader.judging.languages`).
+
+        >>> p = load_problem("delaunay")
+        >>> p.time_limit_for("python") == p.time_limit
+        True
+        """
+        return float(self.time_limits.get(language, self.time_limit))
 
     # -- validation -----------------------------------------------------------------------
     def validate(self) -> list[str]:
