@@ -43,7 +43,9 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import os
+import re
 import resource
 import shutil
 import subprocess
@@ -67,6 +69,49 @@ CXX = shutil.which("g++") or "g++"
 CXXFLAGS = ["-std=gnu++17", "-O2", "-pipe", "-static", "-s"]
 COMPILE_TIMEOUT_S = 120.0
 
+# The C++ time limit rule (the one place it is written down), as Kattis sets a limit from its judges'
+# accepted solutions: the slowest test's CPU time of the accepted C++ solution times a multiplier
+# (Kattis: time_multiplier, 2 to 5), rounded up to half a second, and never below one second.
+CPP_TIME_MULTIPLIER = 5.0
+CPP_LIMIT_STEP_S = 0.5
+CPP_LIMIT_FLOOR_S = 1.0
+# A run is stopped at MEASURE_FACTOR times the cap (its verdict is TLE above the cap), so a too-slow
+# solution's margin over the limit is measured up to that factor.
+MEASURE_FACTOR = 4.0
+
+
+def cpp_time_limit(accepted_slowest_s: float) -> float:
+    """The C++ limit for a problem whose accepted C++ solution's slowest test took this CPU time.
+
+    >>> cpp_time_limit(0.05), cpp_time_limit(0.3), cpp_time_limit(0.61)
+    (1.0, 1.5, 3.5)
+    """
+    stepped = math.ceil(CPP_TIME_MULTIPLIER * accepted_slowest_s / CPP_LIMIT_STEP_S - 1e-9) * CPP_LIMIT_STEP_S
+    return max(CPP_LIMIT_FLOOR_S, stepped)
+
+
+TIME_LIMITS_LINE = re.compile(r"^time_limits:.*\n", re.M)
+
+
+def write_cpp_limit(problem: str, limit_s: float) -> Path:
+    """Write ``time_limits: {cpp: X}`` into the problem's course.yaml by editing its text (comments
+    and formatting kept): the line is replaced when present, else inserted before ``groups:``."""
+    f = ROOT / "assignments" / problem / "course.yaml"
+    text = f.read_text()
+    line = (f"time_limits: {{cpp: {limit_s:g}}}".ljust(36)
+            + "# per test, s; written by benchmarks/bench_cpp_solutions.py --write-limits\n")
+    if TIME_LIMITS_LINE.search(text):
+        text = TIME_LIMITS_LINE.sub(lambda _m: line, text, count=1)
+    else:
+        at = re.search(r"^groups:", text, re.M)
+        if at is None:
+            raise ValueError(f"problem {problem!r}: course.yaml has no 'groups:' line to put time_limits before")
+        text = text[:at.start()] + line + text[at.start():]
+    if yaml.safe_load(text).get("time_limits", {}).get("cpp") != limit_s:
+        raise ValueError(f"problem {problem!r}: writing time_limits into course.yaml failed")
+    f.write_text(text)
+    return f
+
 
 @dataclass
 class Compiled:
@@ -85,6 +130,8 @@ class SolutionResult:
     groups_failed: list[str] = field(default_factory=list)
     slowest_s: float = 0.0
     slowest_test: str = ""
+    total_s: float = 0.0
+    killed: bool = False  # stopped at MEASURE_FACTOR x the cap: slowest_s is a lower bound
     compile_s: float = 0.0
     first_failure: str = ""
     expected: str = ""
@@ -122,30 +169,33 @@ def compile_cpp(source: Path, outdir: Path) -> Compiled:
     return Compiled(source, binary, seconds, "")
 
 
-def _limit_cpu(cap_s: float):
-    def set_limits() -> None:  # in the child: a hard CPU limit a little above the cap
-        secs = int(cap_s) + 2
-        resource.setrlimit(resource.RLIMIT_CPU, (secs, secs))
+def _limit_cpu(seconds: int):
+    def set_limits() -> None:  # in the child: a hard CPU limit
+        resource.setrlimit(resource.RLIMIT_CPU, (seconds, seconds))
     return set_limits
 
 
-def run_test(binary: Path, input_text: str, cap_s: float) -> tuple[str, float, str]:
-    """One run: (outcome 'ok'/'TLE'/'RE', CPU seconds, stdout). The wall clock allows for load."""
+def run_test(binary: Path, input_text: str, cap_s: float) -> tuple[str, float, str, bool]:
+    """One run: (outcome 'ok'/'TLE'/'RE', CPU seconds, stdout, killed). The run may go on to
+    MEASURE_FACTOR x the cap (so a too-slow program's time is measured), its outcome is TLE above
+    the cap; the wall clock allows for a loaded machine."""
+    hard = math.ceil(MEASURE_FACTOR * cap_s)
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    killed = False
     try:
         run = subprocess.run([str(binary)], input=input_text, capture_output=True, text=True,
-                             timeout=max(10.0, 4 * cap_s), preexec_fn=_limit_cpu(cap_s))
+                             timeout=max(60.0, 20 * hard), preexec_fn=_limit_cpu(hard + 1))
         outcome = "ok" if run.returncode == 0 else "RE"
         stdout = run.stdout
         if run.returncode < 0 and -run.returncode in (9, 24):  # SIGKILL / SIGXCPU from the CPU limit
-            outcome = "TLE"
+            outcome, killed = "TLE", True
     except subprocess.TimeoutExpired:
-        outcome, stdout = "TLE", ""
+        outcome, stdout, killed = "TLE", "", True
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
     if cpu > cap_s:
         outcome = "TLE"
-    return outcome, cpu, stdout
+    return outcome, cpu, stdout, killed
 
 
 def check_output(problem: Any, chk: Any, test: Any, args: list, stdout: str) -> tuple[str, str]:
@@ -172,9 +222,10 @@ def judge_solution(problem: Any, compiled: Compiled, cap_s: float, quick: bool,
     for test in problem.tests():
         if quick and test.group in failed:
             continue
-        outcome, cpu, stdout = run_test(compiled.binary, test.input_text, cap_s)
+        outcome, cpu, stdout, killed = run_test(compiled.binary, test.input_text, cap_s)
+        res.total_s += cpu
         if cpu > res.slowest_s:
-            res.slowest_s, res.slowest_test = cpu, test.name
+            res.slowest_s, res.slowest_test, res.killed = cpu, test.name, killed
         if outcome == "ok":
             if test.name not in parsed:
                 parsed[test.name] = (problem.parse_args(test), None)
@@ -200,28 +251,58 @@ def python_accepted(problem: str) -> Path | None:
     return None
 
 
-def python_time(problem: str) -> tuple[str, str, float]:
-    """(file, verdict, slowest test's time_s) of the Python accepted solution, judged by the judge."""
+def python_time(problem: str) -> tuple[str, str, float, float]:
+    """(file, verdict, slowest test's time_s, total time_s) of the Python accepted solution, judged by
+    the judge."""
     path = python_accepted(problem)
     if path is None:
-        return "-", "-", float("nan")
+        return "-", "-", float("nan"), float("nan")
     result = judge_file(problem, path)
-    slowest = max((t.time_s for t in result.tests), default=0.0)
-    return path.name, str(result.verdict), slowest
+    times = [t.time_s for t in result.tests]
+    return path.name, str(result.verdict), max(times, default=0.0), sum(times)
 
 
-def bench_problem(problem_id: str, cap_s: float, quick: bool) -> list[SolutionResult]:
+@dataclass
+class ProblemSummary:
+    problem: str
+    limit_s: float
+    limit_source: str                      # "course.yaml", "--cap" or "written: rule(...)"
+    accepted_slowest_s: float = float("nan")
+    accepted_total_s: float = float("nan")
+    python_slowest_s: float = float("nan")
+    python_total_s: float = float("nan")
+    quadratic_slowest_s: float = float("nan")
+    quadratic_killed: bool = False
+    quadratic_verdict: str = "-"
+    compile_mean_s: float = float("nan")
+
+
+def _fmt(x: float, unit: str = " s", digits: int = 3) -> str:
+    return "-" if x != x else f"{x:.{digits}f}{unit}"
+
+
+def bench_problem(problem_id: str, cap_s: float | None, quick: bool,
+                  write_limits: bool = False) -> tuple[list[SolutionResult], ProblemSummary]:
+    """Compile and judge every C++ solution of one problem. The cap: ``cap_s`` when given, else the
+    problem's C++ limit (course.yaml ``time_limits``); with ``write_limits`` the accepted solutions run
+    first under the Python limit, and the rule's limit is written into course.yaml and used as the cap."""
     problem = load_problem(problem_id)
     tests = problem.tests()
     expected = expected_verdicts(problem_id)
     sources = sorted((SOLUTIONS / problem_id).glob("*.cpp"), key=lambda p: (not p.name.startswith("accepted"), p.name))
     if quick:
-        py = ("-", "skipped (--quick)", float("nan"))
+        py = ("-", "skipped (--quick)", float("nan"), float("nan"))
     else:
         py = python_time(problem_id)
-    py_text = f"Python {py[0]}: {py[1]}" + (f", slowest test {py[2]:.2f} s" if py[2] == py[2] else "")
-    print(f"== {problem_id}: {len(tests)} tests in {len(problem.present_groups)} groups, cap {cap_s:g} s CPU "
-          f"per test; {py_text}", flush=True)
+    py_text = f"Python {py[0]}: {py[1]}" + (f", slowest test {py[2]:.2f} s, total {py[3]:.1f} s" if py[2] == py[2] else "")
+    if write_limits:
+        cap, source = problem.time_limit, "to be written"
+    elif cap_s is not None:
+        cap, source = cap_s, "--cap"
+    else:
+        cap, source = problem.time_limit_for("cpp"), "course.yaml" if "cpp" in problem.time_limits else \
+            "problem.yaml (no C++ limit yet)"
+    print(f"== {problem_id}: {len(tests)} tests in {len(problem.present_groups)} groups; {py_text}", flush=True)
     results = []
     parsed: dict[str, tuple[list, Any]] = {}
     with tempfile.TemporaryDirectory(prefix="bench-cpp-") as tmp:
@@ -232,9 +313,23 @@ def bench_problem(problem_id: str, cap_s: float, quick: bool) -> list[SolutionRe
             status = "ok" if c.binary else "failed: " + errors[0].split("error: ", 1)[-1][:100]
             print(f"compile {src.name:<22} {c.seconds:6.2f} s  {status}", flush=True)
             compiled.append(c)
-        for c in compiled:
-            r = judge_solution(problem, c, cap_s, quick, parsed)
-            want = expected.get(c.source.name)
+        accepted = [c for c in compiled if c.source.name.startswith("accepted")]
+        others = [c for c in compiled if not c.source.name.startswith("accepted")]
+        done = [judge_solution(problem, c, cap, quick, parsed) for c in accepted]
+        if write_limits:
+            slowest = max((r.slowest_s for r in done), default=0.0)
+            cap = cpp_time_limit(slowest)
+            source = (f"written: max({CPP_LIMIT_FLOOR_S:g}, {CPP_TIME_MULTIPLIER:g} x {slowest:.3f} s "
+                      f"rounded up to {CPP_LIMIT_STEP_S:g} s)")
+            write_cpp_limit(problem_id, cap)
+            for r in done:  # the accepted runs were capped by the Python limit: re-verdict against the new cap
+                if r.verdict == "AC" and r.slowest_s > cap:
+                    r.verdict, r.first_failure = "TLE", f"{r.slowest_test}: TLE after {r.slowest_s:.2f} s CPU"
+        print(f"C++ limit {cap:g} s per test ({source}); a run is stopped at {MEASURE_FACTOR:g} x the limit",
+              flush=True)
+        done += [judge_solution(problem, c, cap, quick, parsed) for c in others]
+        for r in done:
+            want = expected.get(r.file)
             if want is None:
                 r.expected, r.matches = "(none)", False
             else:
@@ -248,34 +343,82 @@ def bench_problem(problem_id: str, cap_s: float, quick: bool) -> list[SolutionRe
         groups = f"{len(r.groups_passed)}/{len(r.groups_passed) + len(r.groups_failed)} " + \
                  (" ".join(r.groups_failed) if r.verdict != "CE" else "(does not compile)") if r.groups_failed \
                  else f"{len(r.groups_passed)}/{len(r.groups_passed)} -"
-        slowest = "-" if r.verdict == "CE" else (f">{cap_s:g} s" if r.slowest_s > cap_s else f"{r.slowest_s:.3f} s")
+        slowest = "-" if r.verdict == "CE" else (f">{r.slowest_s:.2f} s" if r.killed else f"{r.slowest_s:.3f} s")
         pyt = f"{py[2]:.2f} s" if py[2] == py[2] else "-"
         print(f"{r.file:<22} {r.verdict:<8} {r.expected:<16} {groups:<34} {slowest:>9} {pyt:>8}  "
               f"{'yes' if r.matches else 'NO'}")
         if r.first_failure and (not r.matches or r.verdict not in ("AC", "CE")):
             print(f"    first failure: {r.first_failure.splitlines()[0][:160]}")
+    summary = ProblemSummary(problem_id, cap, source, python_slowest_s=py[2], python_total_s=py[3])
+    acc = [r for r in results if r.file.startswith("accepted") and r.verdict != "CE"]
+    if acc:
+        summary.accepted_slowest_s = max(r.slowest_s for r in acc)
+        summary.accepted_total_s = sum(r.total_s for r in acc)
+    quad = next((r for r in results if r.file == "quadratic.cpp"), None)
+    if quad is not None:
+        summary.quadratic_slowest_s, summary.quadratic_killed = quad.slowest_s, quad.killed
+        summary.quadratic_verdict = quad.verdict
+    if results:
+        summary.compile_mean_s = sum(r.compile_s for r in results) / len(results)
+    print(f"margins: limit {cap:g} s = {cap / summary.accepted_slowest_s:.1f} x the accepted slowest "
+          f"({_fmt(summary.accepted_slowest_s)}); quadratic slowest "
+          f"{'>' if summary.quadratic_killed else ''}{_fmt(summary.quadratic_slowest_s, ' s', 2)} = "
+          f"{'>' if summary.quadratic_killed else ''}{summary.quadratic_slowest_s / cap:.1f} x the limit"
+          if acc and summary.accepted_slowest_s > 0 else f"margins: - (C++ limit {cap:g} s)")
     print(flush=True)
-    return results
+    return results, summary
+
+
+def print_summary(rows: list[ProblemSummary]) -> None:
+    """One line per problem: the C++ limit and its margins, C++ against Python, the compile cost."""
+    print("== summary: C++ limit per problem and its margins (CPU times; quadratic '>' = stopped at "
+          f"{MEASURE_FACTOR:g} x the limit)")
+    print(f"{'problem':<21} {'limit':>6} {'acc slowest':>11} {'acc total':>9} {'py slowest':>10} {'py total':>9} "
+          f"{'limit/acc':>9} {'quad slowest':>12} {'quad/limit':>10} {'compile/file':>12}")
+    for s in rows:
+        ratio = s.limit_s / s.accepted_slowest_s if s.accepted_slowest_s > 0 else float("nan")
+        gt = ">" if s.quadratic_killed else ""
+        quad = "-" if s.quadratic_slowest_s != s.quadratic_slowest_s else f"{gt}{s.quadratic_slowest_s:.2f} s"
+        qr = "-" if s.quadratic_slowest_s != s.quadratic_slowest_s else \
+            f"{gt}{s.quadratic_slowest_s / s.limit_s:.1f}x {s.quadratic_verdict}"
+        print(f"{s.problem:<21} {s.limit_s:>4g} s {_fmt(s.accepted_slowest_s):>11} {_fmt(s.accepted_total_s, ' s', 2):>9} "
+              f"{_fmt(s.python_slowest_s, ' s', 2):>10} {_fmt(s.python_total_s, ' s', 1):>9} "
+              f"{_fmt(ratio, 'x', 1):>9} {quad:>12} {qr:>10} {_fmt(s.compile_mean_s, ' s', 1):>12}")
 
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--problems", nargs="+", default=None, help="problem ids (default: all with .cpp files)")
-    parser.add_argument("--cap", type=float, default=1.0, help="per-test CPU-time cap in seconds (default 1.0)")
+    parser.add_argument("--cap", type=float, default=None,
+                        help="per-test CPU-time cap in seconds (default: each problem's C++ limit, course.yaml "
+                             "time_limits.cpp)")
+    parser.add_argument("--write-limits", action="store_true",
+                        help="measure the accepted C++ solution, write the rule's limit into course.yaml "
+                             "(time_limits: {cpp: X}) and judge the others with it")
     parser.add_argument("--quick", action="store_true",
                         help="skip the Python comparison; skip a group's remaining tests once it fails")
     parser.add_argument("--json", type=Path, default=None, help="write the rows as JSON here")
     args = parser.parse_args(argv)
+    if args.write_limits and args.cap is not None:
+        parser.error("--write-limits measures its own cap; leave out --cap")
     problems = args.problems or cpp_problems()
     os.environ.setdefault("OMP_NUM_THREADS", "1")
     print(f"compiler: {CXX} {' '.join(CXXFLAGS)}")
     print(subprocess.run([CXX, "--version"], capture_output=True, text=True).stdout.splitlines()[0])
+    print(f"{time.strftime('%Y-%m-%d %H:%M')}, load average {' '.join(f'{x:.1f}' for x in os.getloadavg())}, "
+          f"{os.cpu_count()} cores", flush=True)
     all_results: list[SolutionResult] = []
+    summaries: list[ProblemSummary] = []
     for pid in problems:
-        all_results += bench_problem(pid, args.cap, args.quick)
+        results, summary = bench_problem(pid, args.cap, args.quick, args.write_limits)
+        all_results += results
+        summaries.append(summary)
+    print_summary(summaries)
     bad = [f"{r.problem}/{r.file}: {r.verdict}, expected {r.expected}" for r in all_results if not r.matches]
     if args.json:
-        args.json.write_text(json.dumps([r.__dict__ for r in all_results], indent=1))
+        args.json.write_text(json.dumps({"results": [r.__dict__ for r in all_results],
+                                         "problems": [s.__dict__ for s in summaries]}, indent=1))
+    print(f"load average at the end {' '.join(f'{x:.1f}' for x in os.getloadavg())}")
     print(f"{len(all_results)} C++ solutions on {len(problems)} problems: "
           + ("every verdict as expected" if not bad else f"{len(bad)} unexpected: " + "; ".join(bad)))
     return 1 if bad else 0
