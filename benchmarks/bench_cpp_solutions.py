@@ -3,22 +3,32 @@
 What it is: for each problem with C++ solutions (``solutions/<id>/*.cpp``) it compiles each file
 once into a temporary folder (``g++ -std=gnu++17 -O2 -pipe -static -s``, the flags Kattis, DOMjudge
 and CMS use), runs each binary on every test of the problem in stdio mode (the test's text input on
-stdin, a per-test CPU-time cap), and converts and checks each output with the problem's own checker
-through the public API (``problem.checker.read_output`` and ``check``, as the judge does in stdio
-mode). Per solution it prints the groups passed and failed, the overall verdict (the first non-AC
-test's: AC, WA, PE, TLE against the cap, RE, or CE when it does not compile), the slowest test's CPU
-time, and for comparison the Python accepted solution's slowest test time on the same tests (judged
-by the sandboxed judge, ``grader.judge_file``). Every verdict is checked against
-``solutions/<id>/expected_cpp.yaml`` (``file: VERDICT [group ...]``, the groups being exactly the
-failed ones when given); a mismatch makes the exit status 1.
+stdin, a per-test CPU-time cap: the problem's C++ limit, course.yaml ``time_limits: {cpp: X}``), and
+converts and checks each output with the problem's own checker through the public API
+(``problem.checker.read_output`` and ``check``, as the judge does in stdio mode). Per solution it
+prints the groups passed and failed, the overall verdict (the first non-AC test's: AC, WA, PE, TLE
+above the cap, RE, or CE when it does not compile), the slowest test's CPU time (a run goes on to
+4 x the cap, so a too-slow solution's margin is measured), and for comparison the Python accepted
+solution's slowest test time on the same tests (judged by the sandboxed judge, ``grader.judge_file``).
+Per problem it prints the C++ limit and its margins (limit / the accepted slowest, the quadratic
+slowest / limit), and at the end a summary table (C++ against Python, slowest and total; the compile
+cost per file). Every verdict is checked against ``solutions/<id>/expected_cpp.yaml``
+(``file: VERDICT [group ...]``, the groups being exactly the failed ones when given); a mismatch
+makes the exit status 1.
+
+The C++ limit (``cpp_time_limit``, the one place the rule is written): the accepted C++ solution's
+slowest test's CPU time x 5 (Kattis's time_multiplier is 2 to 5), rounded up to 0.5 s, at least
+1 s. ``--write-limits`` runs the accepted solution first (under the Python limit), writes the rule's
+limit into course.yaml (editing the text: comments and layout stay) and judges the rest with it.
 
 The binaries run outside the jail: they are the course's own reference files, not students' code.
 
 Run (from the checkout, with the course's venv):
     PYTHONPATH=$PWD .venv/bin/python benchmarks/bench_cpp_solutions.py
     PYTHONPATH=$PWD .venv/bin/python benchmarks/bench_cpp_solutions.py --problems delaunay --quick
-    options: --cap SECONDS (per-test CPU cap, default 1.0), --json OUT (the rows as JSON),
-    --quick (no Python comparison, and a group's remaining tests are skipped once it fails)
+    PYTHONPATH=$PWD .venv/bin/python benchmarks/bench_cpp_solutions.py --write-limits   # re-measure the limits
+    options: --cap SECONDS (one cap for every problem instead of its C++ limit), --json OUT (the rows
+    as JSON), --quick (no Python comparison, and a group's remaining tests are skipped once it fails)
 
 Example output (`--problems delaunay`, 2026-12-05, load average 4-6 on 2 cores; the compile lines
 from a `--quick` run just after, once the compiler's message was shortened to its first error):

@@ -1,7 +1,7 @@
 // Obstacle clearance, C++17 stdio: correct but QUADRATIC (problem obstacle-clearance): accepted.cpp
 // with the textbook Bowyer-Watson loop (every live triangle tested per insertion, no walk) and the
 // widest path found by adding edges longest first with a breadth-first search after each one:
-// O(n^2); too slow for the large group (n = 10,000) under a C++-sized time limit.
+// O(n^2); too slow for the large group (n = 10,000 and 20,000) under a C++-sized time limit.
 // Expected verdict: TLE on the large group (solutions/obstacle-clearance/expected_cpp.yaml).
 // BEGIN PREDICATES
 // ---- exact predicates: a floating-point filter with Shewchuk's error bounds, else exact ----
