@@ -109,7 +109,7 @@ def write_cpp_limit(problem: str, limit_s: float) -> Path:
     f = ROOT / "assignments" / problem / "course.yaml"
     text = f.read_text()
     line = (f"time_limits: {{cpp: {limit_s:g}}}".ljust(36)
-            + "# per test, s; written by benchmarks/bench_cpp_solutions.py --write-limits\n")
+            + "# C++ per test, s (Python: problem.yaml's); bench_cpp_solutions.py --write-limits\n")
     if TIME_LIMITS_LINE.search(text):
         text = TIME_LIMITS_LINE.sub(lambda _m: line, text, count=1)
     else:
