@@ -30,24 +30,42 @@ Run (from the checkout, with the course's venv):
     options: --cap SECONDS (one cap for every problem instead of its C++ limit), --json OUT (the rows
     as JSON), --quick (no Python comparison, and a group's remaining tests are skipped once it fails)
 
-Example output (`--problems delaunay`, 2026-12-05, load average 4-6 on 2 cores; the compile lines
-from a `--quick` run just after, once the compiler's message was shortened to its first error):
+Example output (the full run with `--write-limits`, 2026-12-06 01:02, load average 13.7 falling to
+7.3 on 2 cores; the delaunay block and the summary; all of it in benchmarks/README.md):
     compiler: /usr/bin/g++ -std=gnu++17 -O2 -pipe -static -s
     g++ (Debian 12.2.0-14+deb12u1) 12.2.0
-    == delaunay: 200 tests in 6 groups, cap 1 s CPU per test; Python accepted_walk.py: AC, slowest test 1.26 s
-    compile accepted.cpp             3.87 s  ok
-    compile compile_error.cpp        2.33 s  failed: 'orient2d' was not declared in this scope; did you mean ...
-    compile quadratic.cpp            3.91 s  ok
-    compile wrong_double.cpp         3.40 s  ok
+    2026-12-06 01:02, load average 13.7 14.1 12.7, 2 cores
+    == delaunay: 200 tests in 6 groups; Python accepted_walk.py: AC, slowest test 0.93 s, total 1.5 s
+    compile accepted.cpp            10.23 s  ok
+    compile compile_error.cpp        6.14 s  failed: ‘orient2d’ was not declared in this scope; did you mean ‘exact::orient2d’?
+    compile quadratic.cpp           10.38 s  ok
+    compile wrong_double.cpp         9.79 s  ok
+    C++ limit 1 s per test (written: max(1, 5 x 0.048 s rounded up to 0.5 s)); a run is stopped at 4 x the limit
     solution               verdict  expected         groups passed / failed               slowest   python  ok
-    accepted.cpp           AC       AC               6/6 -                                0.058 s   1.26 s  yes
-    compile_error.cpp      CE       CE               0/6 (does not compile)                     -   1.26 s  yes
-    quadratic.cpp          TLE      TLE large        5/6 large                               >1 s   1.26 s  yes
-        first failure: large/01: TLE after 2.98 s CPU
-    wrong_double.cpp       WA       WA degenerate    5/6 degenerate                          >1 s   1.26 s  yes
-        first failure: degenerate/03: edge 42-63 is not Delaunay: point 17 is strictly inside the circumcircle ...
-
-    4 C++ solutions on 1 problems: every verdict as expected
+    accepted.cpp           AC       AC               6/6 -                                0.048 s   0.93 s  yes
+    compile_error.cpp      CE       CE               0/6 (does not compile)                     -   0.93 s  yes
+    quadratic.cpp          TLE      TLE large        5/6 large                            >4.73 s   0.93 s  yes
+        first failure: large/01: TLE after 4.73 s CPU
+    wrong_double.cpp       WA       WA degenerate    5/6 degenerate                       >4.78 s   0.93 s  yes
+        first failure: degenerate/03: edge 42-63 is not Delaunay: point 17 is strictly inside the circumcircle of triangle (42, 63, 35)
+    margins: limit 1 s = 20.9 x the accepted slowest (0.048 s); quadratic slowest >4.73 s = >4.7 x the limit
+    ...
+    == summary: C++ limit per problem and its margins (CPU times; quadratic '>' = stopped at 4 x the limit)
+    problem                limit acc slowest acc total py slowest  py total limit/acc quad slowest quad/limit compile/file
+    bowyer-watson-timed      1 s     0.003 s    0.37 s     0.09 s     0.2 s    320.8x       0.00 s    0.0x AC       14.4 s
+    closest-pair             1 s     0.177 s    0.92 s     0.60 s     1.7 s      5.7x      >4.81 s  >4.8x TLE       15.2 s
+    delaunay                 1 s     0.048 s    0.72 s     0.93 s     1.5 s     20.9x      >4.73 s  >4.7x TLE        9.1 s
+    delaunay-3d              1 s     0.101 s    0.47 s     3.58 s     6.3 s      9.9x       2.38 s   2.4x TLE       14.2 s
+    dynamic-network          1 s     0.116 s    0.39 s     0.88 s     1.7 s      8.7x      >4.84 s  >4.8x TLE       10.7 s
+    edge-flip                1 s     0.033 s    0.65 s     1.06 s     2.0 s     30.6x      >4.87 s  >4.9x TLE       10.7 s
+    emst                   1.5 s     0.292 s    1.16 s     0.92 s     1.8 s      5.1x      >6.62 s  >4.4x TLE       11.7 s
+    largest-empty-circle     1 s     0.027 s    0.51 s     0.53 s     1.2 s     37.3x       2.79 s   2.8x TLE       10.3 s
+    navmesh                  1 s     0.054 s    0.85 s     0.83 s     2.2 s     18.7x      >4.75 s  >4.7x TLE        8.1 s
+    obstacle-clearance       1 s     0.046 s    1.22 s     1.10 s     2.3 s     21.8x      >4.79 s  >4.8x TLE       10.4 s
+    proximity-network        1 s     0.058 s    1.28 s     0.95 s     1.8 s     17.2x      >4.91 s  >4.9x TLE        6.5 s
+    voronoi                  1 s     0.039 s    1.31 s     0.48 s     1.2 s     25.5x       2.15 s   2.2x TLE        8.5 s
+    load average at the end 7.3 9.3 11.5
+    48 C++ solutions on 12 problems: every verdict as expected
 """
 from __future__ import annotations
 
