@@ -26,8 +26,8 @@ beside the Python ones, but a Kattis package has one time limit, the Python one 
 ``time_limits``). So (:func:`cpp_placements`): an accepted one goes to ``accepted/``; a
 wrong one (WA, PE, RE, MLE: the time limit does not change them) where its expected failing
 groups say, from ``expected_cpp.yaml``; a too-slow one (TLE) only when the judge takes ``.cpp``
-and judging it under the package's limit still fails (otherwise it is left out: under Python's
-limit an O(n^2) C++ program may pass); a compile error never (problemtools has no directory for
+and judging it under twice the package's limit (problemtools' safety margin) still fails
+(otherwise it is left out: under Python's limit an O(n^2) C++ program may pass); a compile error never (problemtools has no directory for
 it and reports it as an error). What was left out and why is printed on stderr and written in the
 package's ``README.md``. verifyproblem compiles C++ with its own flags (``g++ -O2 -static``, a
 newer ``-std``), not the course's, and the accepted programs pass there too
@@ -250,8 +250,9 @@ def cpp_placements(p: Problem, judge: bool = True, partial: bool = False) -> tup
     do not depend on it, so they are placed from the expected failing groups: none of them
     exported -> left out (``partial``) or ``ValueError``; some -> ``partially_accepted``; all ->
     the verdict's directory, when the first failing group overall is exported (else the first
-    exported failure's verdict is unknown: left out). TLE needs judging under the package's limit
-    (``judge`` and the judge takes ``.cpp``), placed then as :func:`placements` places Python."""
+    exported failure's verdict is unknown: left out). When ``judge`` and the judge takes ``.cpp``,
+    every non-AC file is judged instead, under :data:`TLE_SAFETY` times the package's limit, and
+    placed as :func:`placements` places Python; one that passes everything there is left out."""
     from ..judging.languages import language_of
 
     out: dict[str, str] = {}
@@ -271,7 +272,7 @@ def cpp_placements(p: Problem, judge: bool = True, partial: bool = False) -> tup
         elif judge and language_of(src) is not None:
             placed = _judged_cpp(p, name, src, verdict, partial, limit)
             if placed is None:
-                left[name] = f"it passes every exported group under {limit}"
+                left[name] = f"it passes every exported group under {TLE_SAFETY:g} times {limit}"
             else:
                 out[name] = placed
         elif verdict == "TLE":
@@ -293,18 +294,26 @@ def cpp_placements(p: Problem, judge: bool = True, partial: bool = False) -> tup
     return out, left
 
 
+#: problemtools' ``time_safety_margin``: a submission in ``time_limit_exceeded/`` must still time
+#: out under this many times the package's limit, so a C++ file is judged under that limit
+TLE_SAFETY = 2.0
+
+
 def _judged_cpp(p: Problem, name: str, src: Path, verdict: str, partial: bool, limit: str) -> str | None:
-    """Judge a C++ file on ``p``'s tests under the package's time limit (every language gets
-    ``p.time_limit``); its ``submissions/`` directory, or None when it passes everything."""
+    """Judge a C++ file on ``p``'s tests under :data:`TLE_SAFETY` times the package's time limit
+    (so that a TLE placed here is a TLE for verifyproblem however fast its machine); its
+    ``submissions/`` directory, or None when it passes everything."""
+    from ..judging.languages import language_of
     from .judge import Judge
 
-    q = dataclasses.replace(p, time_limits={})
+    lang = language_of(src)
+    q = dataclasses.replace(p, time_limits={**p.time_limits, lang.name: TLE_SAFETY * p.time_limit})
     q.__dict__["_tests"] = p.tests()
     result = Judge(q, hide=[str(src.parent)]).judge_path(src)
     if result.score == result.max_score:
         if verdict != "TLE" and not partial:
             raise ValueError(f"{p.id}: {name} (expected {verdict}) passes every exported test under {limit}")
-        return None
+        return None  # a TLE: within twice the package's limit, where its verdict depends on the machine
     if result.score > 0:
         return "partially_accepted"
     return KATTIS_DIRS.get(str(result.verdict), "wrong_answer")

@@ -175,3 +175,38 @@ def test_cpp_expected_verdicts_are_known(monkeypatch):
     monkeypatch.setattr(kattis, "expected_cpp", lambda pid: {"accepted.cpp": ("OK", [])})
     with pytest.raises(ValueError, match="delaunay: expected_cpp.yaml: accepted.cpp: unknown verdict 'OK'"):
         kattis.cpp_placements(load_problem("delaunay"), judge=False)
+
+
+def test_cpp_files_are_judged_under_twice_the_package_limit_once_the_judge_takes_them(monkeypatch):
+    """Once ``.cpp`` is among the judge's languages every non-AC C++ file is judged on the exported
+    tests, under twice the package's (Python) limit, problemtools' safety margin: what passes there
+    is left out, a partial score is ``partially_accepted``, none is its first failure's directory.
+    (The judge is replaced here by one that reports given scores: the placement is what is tested.)"""
+    import grader.contest.judge as judge_module
+    import grader.judging.languages as languages
+    from grader.judging.verdicts import JudgeResult, TestResult
+
+    monkeypatch.setattr(languages, "language_of", lambda path: languages.CPP)
+    problem = load_problem("delaunay")
+    exported = selection(problem, scored_groups(problem, ["tiny", "large:1"]))
+    outcome = {"wrong_double.cpp": ("WA", ["tiny"]), "quadratic.cpp": ("TLE", ["large"]), "compile_error.cpp": None}
+    limits = []
+
+    class FakeJudge:
+        def __init__(self, p, hide=()):
+            limits.append(p.time_limit_for("cpp"))
+
+        def judge_path(self, src):
+            verdict, failing = outcome[Path(src).name]
+            tests = [TestResult(f"{g}/01", g, verdict if g in failing else "AC", 0.1) for g in ("tiny", "large")]
+            return JudgeResult("delaunay", str(src), tests, {"tiny": 15, "large": 30})
+
+    monkeypatch.setattr(judge_module, "Judge", FakeJudge)
+    placed, left = cpp_placements(exported, judge=True, partial=True)
+    assert placed == {"accepted.cpp": "accepted", "wrong_double.cpp": "partially_accepted",
+                      "quadratic.cpp": "partially_accepted"}, (placed, left)
+    assert limits == [2 * problem.time_limit] * 2 and "compile_error.cpp" in left
+    outcome["quadratic.cpp"] = ("TLE", [])  # passes every exported group under 12 s: left out
+    outcome["wrong_double.cpp"] = ("WA", ["tiny", "large"])
+    placed, left = cpp_placements(exported, judge=True, partial=True)
+    assert placed["wrong_double.cpp"] == "wrong_answer" and "2 times the package's time limit" in left["quadratic.cpp"]
