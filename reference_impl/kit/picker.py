@@ -423,8 +423,9 @@ class PointPicker(KitWidget):
                 self.view.ack, self._ack = self._ack, None
         status = self.status_text()
         self.status.value = f'<span class="kit-status">{html.escape(status)}</span>'
-        self.view.announce = status
-        if notify:                       # a finished change (not each move of a drag): the box follows
+        if notify or not self.view.announce:   # a finished change (not each move of a drag): the box and
+            self.view.announce = status        # the live region follow, once
+        if notify:
             self.text.value = points_text(self._points)
             self.message.value = ""
         if notify and self.on_change is not None:
