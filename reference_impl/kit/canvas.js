@@ -356,9 +356,7 @@ function render({ model, el }) {
     ev.preventDefault();
     ev.stopPropagation();        // not a notebook shortcut (Enter, arrows, ...) while the picture has the focus
   }
-  svg.setAttribute("tabindex", "0");
   svg.setAttribute("data-lm-suppress-shortcuts", "true");
-  svg.setAttribute("focusable", "true");
   svg.addEventListener("keydown", onKey);
   svg.addEventListener("keyup", ev => {
     if (ARROWS[ev.key] && drag && drag.keys && drag.endSeq === null) {   // the key's drag ends: send the release
@@ -369,12 +367,16 @@ function render({ model, el }) {
   svg.addEventListener("focus", () => { focused = true; draw(); });
   svg.addEventListener("blur", () => { focused = false; draw(); });
   function describe() {
-    svg.setAttribute("role", live() || model.get("stepper") ? "application" : "img");
+    const keys = live() || model.get("stepper");     // a picture that takes keys is a tab stop; a mere picture is not
+    if (keys) svg.setAttribute("tabindex", "0"); else svg.removeAttribute("tabindex");
+    svg.setAttribute("role", keys ? "application" : "img");
     svg.setAttribute("aria-label", model.get("label") || (live() ? "point picker" : "picture"));
     if (say.textContent !== (model.get("announce") || "")) say.textContent = model.get("announce") || "";
   }
   describe();
   model.on("change:label", describe);
+  model.on("change:stepper", describe);
+  model.on("change:interactive", () => { svg.classList.toggle("kit-interactive", live()); describe(); });
   model.on("change:announce", describe);
 
   model.on("change:ack", () => {
