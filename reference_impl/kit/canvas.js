@@ -22,7 +22,7 @@
 //   ] / [ / Space   select the next / previous point / the one nearest the cursor; Escape: none
 //   Delete, Backspace  {kind: "remove", i} of the selected point
 // A player's picture (`stepper`): left / right arrow {kind: "step", by: -1 / 1} (Shift: 5),
-// Home / End by -1e6 / 1e6.  Keys the picture uses do not reach JupyterLab's shortcuts.
+// Home / End by -1e6 / 1e6, Space {kind: "play"} (play / pause).  Keys the picture uses do not reach JupyterLab's shortcuts.
 // `label` is the picture's aria-label; `announce` fills a polite live region (the status line).
 
 const NS = "http://www.w3.org/2000/svg";
@@ -325,8 +325,9 @@ function render({ model, el }) {
     if (!live()) {
       if (!model.get("stepper")) return;
       const by = { ArrowLeft: -1, ArrowRight: 1, ArrowUp: -1, ArrowDown: 1, Home: -1e6, End: 1e6 }[ev.key];
-      if (by === undefined) return;
-      model.send({ kind: "step", by: Math.abs(by) === 1 && ev.shiftKey ? 5 * by : by });
+      if (ev.key === " ") model.send({ kind: "play" });
+      else if (by === undefined) return;
+      else model.send({ kind: "step", by: Math.abs(by) === 1 && ev.shiftKey ? 5 * by : by });
     } else if (ARROWS[ev.key]) {
       keyMove(ev, ...ARROWS[ev.key]);
     } else if (ev.key === "Enter") {

@@ -12,7 +12,7 @@ one, so that a callback that reports its own errors sees a malformed one too).  
 travel: a move that leaves the triangles as they were sends the new points only.
 The picture is
 usable without a mouse: it takes the keyboard focus (Tab; a visible focus ring), a picker's
-picture turns keys into the same gestures (see ``KEYS``) and a player's into ``step``; ``label``
+picture turns keys into the same gestures (see ``KEYS``) and a player's into ``step`` and ``play``; ``label``
 is its ARIA label and ``announce`` the text of a polite live region that screen readers read
 out when it changes (the status line).  The front end is a file in the package (no build step, no network), and the widget
 state that JupyterLab saves in a notebook holds the last scene, so a saved lesson
@@ -27,7 +27,7 @@ reopened without a kernel still shows its pictures.
 >>> SceneView.parse({"kind": "spin"})
 Traceback (most recent call last):
 ...
-ValueError: unknown gesture 'spin' (expected add, remove, move or step)
+ValueError: unknown gesture 'spin' (expected add, remove, move, step or play)
 """
 from __future__ import annotations
 
@@ -56,6 +56,7 @@ KEYS = (
 PLAYER_KEYS = (
     ("left / right arrow", "the previous / next step (with Shift: 5 steps)"),
     ("Home / End", "the first / last step"),
+    ("Space", "play / pause"),
 )
 """A player's picture's keys once it has the focus."""
 
@@ -129,6 +130,8 @@ class SceneView(anywidget.AnyWidget):
             return {"kind": "add", "x": _number(content, "x"), "y": _number(content, "y")}
         if kind == "remove":
             return {"kind": "remove", "i": _index(content)}
+        if kind == "play":
+            return {"kind": "play"}
         if kind == "step":
             by = content.get("by")
             if isinstance(by, bool) or not isinstance(by, int):
@@ -137,4 +140,4 @@ class SceneView(anywidget.AnyWidget):
         if kind == "move":
             return {"kind": "move", "i": _index(content), "x": _number(content, "x"), "y": _number(content, "y"),
                     "seq": _index(content, "seq"), "drag": _index(content, "drag"), "end": bool(content.get("end"))}
-        raise ValueError(f"unknown gesture {kind!r} (expected add, remove, move or step)")
+        raise ValueError(f"unknown gesture {kind!r} (expected add, remove, move, step or play)")

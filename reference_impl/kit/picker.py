@@ -377,8 +377,8 @@ class PointPicker(KitWidget):
             if isinstance(seq, int) and not isinstance(seq, bool) and seq > self.view.ack:
                 self.view.ack = seq                      # answered, so the browser lets the drag go
             raise
-        if g["kind"] == "step":
-            raise ValueError("a point picker takes add, remove and move gestures, got 'step'")
+        if g["kind"] in ("step", "play"):
+            raise ValueError(f"a point picker takes add, remove and move gestures, got {g['kind']!r}")
         if g["kind"] == "add":
             self.add_point(*self.canvas.to_data(g["x"], g["y"]))
         elif g["kind"] == "remove":

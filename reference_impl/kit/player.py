@@ -29,7 +29,7 @@ True
 
 Without a mouse: Tab reaches play, previous, next and the slider (whose arrow keys move it); the
 picture itself takes the focus too, and then the left / right arrow keys step (Shift: 5 steps),
-Home and End go to the first and last step (``canvas.PLAYER_KEYS``).  The caption is said by a
+Home and End go to the first and last step, Space plays and pauses (``canvas.PLAYER_KEYS``).  The caption is said by a
 live region as the steps change.
 """
 from __future__ import annotations
@@ -358,7 +358,7 @@ class StepPlayer(KitWidget):
         self.image = SceneView(*size, interactive=False, stepper=True)   # drawn by the browser (kit/canvas.js)
         self.image.add_class("kit-player-image")
         self.image.label = (f"{title or 'step player'}: left and right arrow keys step, Home and End go to "
-                            "the first and last step")
+                            "the first and last step, Space plays and pauses")
         self.image.on_gesture(self.guard(self.handle_gesture))
         self.prev.tooltip, self.next.tooltip = "the previous step", "the next step"
         self.caption = widgets.HTML()
@@ -395,10 +395,14 @@ class StepPlayer(KitWidget):
         self.slider.value = max(0, min(len(self.steps) - 1, int(value))) + 1
 
     def handle_gesture(self, gesture: Any) -> None:
-        """A key pressed on the focused picture: ``{"kind": "step", "by": k}`` moves k steps (clamped)."""
+        """A key pressed on the focused picture: ``{"kind": "step", "by": k}`` moves k steps (clamped),
+        ``{"kind": "play"}`` plays or pauses."""
         g = SceneView.parse(gesture)
+        if g["kind"] == "play":                     # Space: play / pause (the Play widget runs in the page)
+            self.play.playing = not self.play.playing
+            return
         if g["kind"] != "step":
-            raise ValueError(f"a step player's picture takes step gestures, got {g['kind']!r}")
+            raise ValueError(f"a step player's picture takes step and play gestures, got {g['kind']!r}")
         self._go(self.index + g["by"])
 
     # -- drawing

@@ -204,6 +204,11 @@ def test_player_by_keys(page):
     assert player.locator(".kit-live").inner_text().startswith("step 11/11: done")
     page.keyboard.press("Home")
     assert wait_kernel(page, "print(json.dumps(player.index))", 0) == 0
+    # Space plays (the page's Play widget moves the slider, the kernel follows), Space again pauses
+    page.keyboard.press("Space")
+    assert wait_kernel(page, "print(json.dumps(player.play.playing and player.index >= 2))", True) is True
+    page.keyboard.press("Space")
+    assert wait_kernel(page, "print(json.dumps(player.play.playing))", False) is False
     print(f"\nkeyboard player: right arrow -> the next step drawn {step_ms:.0f} ms")
 
 

@@ -171,10 +171,19 @@ def test_player_keys_step_and_clamp():
     assert player.index == 0
 
 
+def test_space_plays_and_pauses():
+    player = StepPlayer.bowyer_watson([(1, 1), (3, 2), (5, 1), (4, 4)])
+    assert player.play.playing is False and "Space plays" in player.image.label
+    send(player.image, {"kind": "play"})
+    assert player.play.playing is True
+    send(player.image, {"kind": "play"})
+    assert player.play.playing is False
+
+
 @pytest.mark.parametrize("bad, message", [
     ({"kind": "step", "by": 1.5}, "by must be a whole number of steps, got 1.5"),
     ({"kind": "step", "by": True}, "by must be a whole number of steps, got True"),
-    ({"kind": "add", "x": 1, "y": 1}, "takes step gestures, got 'add'"),
+    ({"kind": "add", "x": 1, "y": 1}, "takes step and play gestures, got 'add'"),
 ])
 def test_player_refuses_a_bad_gesture_visibly(bad, message):
     player = StepPlayer.bowyer_watson([(1, 1), (3, 2), (5, 1), (4, 4)])
