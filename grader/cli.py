@@ -38,6 +38,7 @@ from .jail import JailUnavailable, mechanism
 from .contest.judge import Judge
 from .problems import list_problems, load_problem
 from .classroom.store import ResultStore
+from .judging.languages import CPP, LANGUAGES, PYTHON, Language
 from .judging.verdicts import format_table
 
 
@@ -48,15 +49,30 @@ def _existing_store(path: str) -> ResultStore:
     return ResultStore(path)
 
 
+def compiled_languages() -> list[Language]:
+    """The compiled languages whose limits ``list`` shows: those the judge accepts and C++ (whose
+    limits the statements already give), each once, in :data:`LANGUAGES` order."""
+    return [lang for lang in dict.fromkeys((*LANGUAGES, CPP)) if lang.compile]
+
+
 def _cmd_list(a: argparse.Namespace) -> int:
-    rows = [(p.id, p.entry, f"{p.time_limit:g}s", f"{p.memory_mb}MB", str(p.points), p.title)
-            for p in list_problems()]
+    """One row per problem: the first columns (id, entry, Python's time, memory, points) are as they
+    always were for scripts; then the time limit of each compiled language, then the title. The
+    compile commands follow the table once, on stderr, so that stdout stays the table."""
+    langs = compiled_languages()
+    rows = [(p.id, p.entry, f"{p.time_limit:g}s", f"{p.memory_mb}MB", str(p.points),
+             *(f"{p.time_limit_for(lang.name):g}s" for lang in langs), p.title) for p in list_problems()]
     if a.json:
-        keys = ("id", "entry", "time_limit", "memory", "points", "title")
+        keys = ("id", "entry", "time_limit", "memory", "points", *(f"time_limit_{lang.name}" for lang in langs), "title")
         print(json.dumps([dict(zip(keys, r)) for r in rows], indent=1))
         return 0
-    for r in [("id", "entry", "time", "memory", "points", "title"), *rows]:
-        print(f"{r[0]:22} {r[1]:22} {r[2]:6} {r[3]:7} {r[4]:6} {r[5]}")
+    for r in [("id", "entry", "time", "memory", "points", *(lang.name for lang in langs), "title"), *rows]:
+        print(f"{r[0]:22} {r[1]:22} {r[2]:6} {r[3]:7} {r[4]:6} " + "".join(f"{c:5} " for c in r[5:-1]) + r[-1])
+    print(f"time: the CPU-time limit per test for Python ({', '.join(PYTHON.all_suffixes)})", file=sys.stderr)
+    for lang in langs:
+        command = " ".join(lang.compile_command("main" + lang.suffixes[0], "main"))
+        print(f"{lang.name}: the limit for {', '.join(lang.suffixes)} files, compiled as `{command}`, "
+              f"run in {'/'.join(lang.modes)} mode", file=sys.stderr)
     return 0
 
 
