@@ -13,7 +13,9 @@ Example:
 
 from __future__ import annotations
 
+import dataclasses
 import os
+import shutil
 import sys
 import time
 import traceback
@@ -22,6 +24,7 @@ from typing import Callable, Sequence
 
 from ..judging import hidden_feedback
 from ..judging.check_budget import CheckTimeout, check_seconds, cpu_budget
+from ..judging.compile import build_dir, compile_source
 from ..problems import Problem, TestCase, load_problem
 from ..judging.runner import FunctionWorker, RunOutcome, idle_budget_for, output_paths, run_stdio
 from ..jail import Limits, Sandbox
@@ -187,11 +190,33 @@ class Judge:
         mode = sub.mode(self.problem.entry)
         if mode == "missing":
             return self._all(name, Verdict.CE, sub.missing_entry_message(self.problem.entry), mode, on_test)
+        if not sub.compiled:
+            return self._judge(sub, name, mode, t0, on_test, prior, deadline)
+        binary_dir = build_dir()  # a compiled language: compiled once, before any test
+        try:
+            binary = ""
+            if any(t.name not in prior for t in self.tests):
+                built = compile_source(sub.source, sub.language, binary_dir, hide=self.hide, trusted=self.trusted)
+                if not built.ok:
+                    result = self._all(name, Verdict.CE, built.message, mode, on_test)
+                    result.judge_time_s = time.monotonic() - t0
+                    return result
+                binary = built.binary
+            return self._judge(sub, name, mode, t0, on_test, prior, deadline, binary)
+        finally:
+            shutil.rmtree(binary_dir, ignore_errors=True)
+
+    def _judge(self, sub: Submission, name: str, mode: str, t0: float, on_test: Callable[[TestResult], None] | None,
+               prior: dict[str, TestResult], deadline: float | None, binary: str = "") -> JudgeResult:
+        """The loop over the tests (``binary``: a compiled submission's program, run per test)."""
+        time_limit = self.problem.time_limit_for(sub.language.name)
+        limits = dataclasses.replace(self.limits, cpu_s=time_limit)
         results: list[TestResult] = []
         failed_groups: set[str] = set()
         load_failure: tuple[Verdict, str] | None = None
-        idle_left = idle_budget_for(self.problem.time_limit)
-        with Sandbox(self.limits, hide=self.hide, cover=self.cover, trusted=self.trusted) as box:
+        idle_left = idle_budget_for(time_limit)
+        with Sandbox(limits, hide=self.hide, cover=self.cover, trusted=self.trusted, program=binary or None,
+                     no_processes=True if binary else None) as box:
             worker = None
             if mode == "function":
                 budget = self.problem.time_limit * len(self.tests) + 30
@@ -212,7 +237,7 @@ class Judge:
                     elif deadline is not None and time.monotonic() >= deadline:
                         r = TestResult(test.name, test.group, Verdict.SKIPPED, message="not run: the time given ran out")
                     else:
-                        r, idle = self._run_one(box, worker, sub, k, idle_left)
+                        r, idle = self._run_one(box, worker, sub, k, idle_left, time_limit, bool(binary))
                         idle_left -= idle
                         if worker is not None and worker.load_failure is not None and r.verdict in (Verdict.CE, Verdict.SV):
                             load_failure = (r.verdict, r.message)
@@ -258,8 +283,10 @@ class Judge:
             r.hidden_message = hidden_feedback.for_checker("WA", message)
 
     def _run_one(self, box: Sandbox, worker: FunctionWorker | None, sub: Submission, k: int,
-                 idle_left: float) -> tuple[TestResult, float]:
-        """One test's result and the wall time the submission spent not computing in it."""
+                 idle_left: float, time_limit: float | None = None, program: bool = False) -> tuple[TestResult, float]:
+        """One test's result and the wall time the submission spent not computing in it
+        (``time_limit``: the language's, default the problem's; ``program``: run the sandbox's binary)."""
+        time_limit = self.problem.time_limit if time_limit is None else time_limit
         test = self.tests[k]
         idle = 0.0
         before = err_before = 0
@@ -269,10 +296,10 @@ class Judge:
             if worker is not None:
                 before = _file_size(worker.out_paths[0])
                 err_before = _file_size(err_path)
-                outcome = worker.call(args, self.problem.time_limit, idle_left=idle_left)
+                outcome = worker.call(args, time_limit, idle_left=idle_left)
             else:
-                outcome = run_stdio(box, sub.source, test.input_text, self.problem.time_limit,
-                                    self.problem.forbidden, filename=sub.filename, idle_left=idle_left)
+                outcome = run_stdio(box, sub.source, test.input_text, time_limit, self.problem.forbidden,
+                                    filename=sub.filename, idle_left=idle_left, program=program)
             idle = outcome.idle_s
             r = TestResult(test.name, test.group, Verdict.JE, outcome.time_s, round(outcome.memory_mb, 1))
             if outcome.status == "ok":
@@ -299,7 +326,7 @@ class Judge:
 
 
 def judge_file(problem: str | Problem, path: str | Path, hide: Sequence[str] = ()) -> JudgeResult:
-    """Judge one file (``.py`` or ``.ipynb``) on one problem.
+    """Judge one file (``.py``, ``.ipynb`` or C++) on one problem.
 
     >>> judge_file("delaunay", "solutions/delaunay/accepted_walk.py").score   # doctest: +SKIP
     100
