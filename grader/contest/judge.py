@@ -24,7 +24,7 @@ from typing import Callable, Sequence
 
 from ..judging import hidden_feedback
 from ..judging.check_budget import CheckTimeout, check_seconds, cpu_budget
-from ..judging.compile import build_dir, compile_source
+from ..judging.compile import COMPILE_LIMITS, build_dir, compile_source
 from ..problems import Problem, TestCase, load_problem
 from ..judging.runner import FunctionWorker, RunOutcome, idle_budget_for, output_paths, run_stdio
 from ..jail import Limits, Sandbox
@@ -131,12 +131,15 @@ class Judge:
     """Judges submissions for one problem; reusable (keeps the parsed tests)."""
 
     def __init__(self, problem: Problem | str, hide: Sequence[str | os.PathLike] = (), stop_at_first_failure: bool = False,
-                 trusted: bool | None = None, stderr_lines: int = 0):
+                 trusted: bool | None = None, stderr_lines: int = 0, compile_limits: Limits | None = None):
         """``trusted``: where no kernel jail can be built, judge without one instead of raising
         :class:`grader.jail.JailUnavailable` (a student's own code; default ``$GRADER_TRUSTED``).
         ``stderr_lines``: a failing test keeps the last that many lines of the submission's stderr
-        in ``TestResult.stderr`` (0: none)."""
+        in ``TestResult.stderr`` (0: none). ``compile_limits``: the compile step's limits for a
+        compiled language (default :data:`grader.judging.compile.COMPILE_LIMITS`; its wall-clock
+        cap is twice the CPU time)."""
         self.stderr_lines = stderr_lines
+        self.compile_limits = compile_limits or COMPILE_LIMITS
         self.problem = load_problem(problem) if isinstance(problem, str) else problem
         self.trusted = trusted
         self.stop_at_first_failure = stop_at_first_failure
@@ -196,7 +199,8 @@ class Judge:
         try:
             binary = ""
             if any(t.name not in prior for t in self.tests):
-                built = compile_source(sub.source, sub.language, binary_dir, hide=self.hide, trusted=self.trusted)
+                built = compile_source(sub.source, sub.language, binary_dir, hide=self.hide, trusted=self.trusted,
+                                       limits=self.compile_limits, wall_s=2 * self.compile_limits.cpu_s)
                 if not built.ok:
                     result = self._all(name, Verdict.CE, built.message, mode, on_test)
                     result.judge_time_s = time.monotonic() - t0
