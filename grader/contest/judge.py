@@ -14,17 +14,19 @@ Example:
 from __future__ import annotations
 
 import dataclasses
+import hashlib
 import os
 import shutil
 import sys
 import time
 import traceback
+import weakref
 from pathlib import Path
 from typing import Callable, Sequence
 
 from ..judging import hidden_feedback
 from ..judging.check_budget import CheckTimeout, check_seconds, cpu_budget
-from ..judging.compile import COMPILE_LIMITS, build_dir, compile_source
+from ..judging.compile import COMPILE_LIMITS, CompileResult, build_dir, compile_source
 from ..problems import Problem, TestCase, load_problem
 from ..judging.runner import FunctionWorker, RunOutcome, idle_budget_for, output_paths, run_stdio
 from ..jail import Limits, Sandbox
@@ -140,6 +142,7 @@ class Judge:
         cap is twice the CPU time)."""
         self.stderr_lines = stderr_lines
         self.compile_limits = compile_limits or COMPILE_LIMITS
+        self._build: tuple[tuple[str, str], CompileResult, weakref.finalize] | None = None
         self.problem = load_problem(problem) if isinstance(problem, str) else problem
         self.trusted = trusted
         self.stop_at_first_failure = stop_at_first_failure
@@ -193,22 +196,30 @@ class Judge:
         mode = sub.mode(self.problem.entry)
         if mode == "missing":
             return self._all(name, Verdict.CE, sub.missing_entry_message(self.problem.entry), mode, on_test)
-        if not sub.compiled:
+        if not sub.compiled or all(t.name in prior for t in self.tests):
             return self._judge(sub, name, mode, t0, on_test, prior, deadline)
-        binary_dir = build_dir()  # a compiled language: compiled once, before any test
-        try:
-            binary = ""
-            if any(t.name not in prior for t in self.tests):
-                built = compile_source(sub.source, sub.language, binary_dir, hide=self.hide, trusted=self.trusted,
-                                       limits=self.compile_limits, wall_s=2 * self.compile_limits.cpu_s)
-                if not built.ok:
-                    result = self._all(name, Verdict.CE, built.message, mode, on_test)
-                    result.judge_time_s = time.monotonic() - t0
-                    return result
-                binary = built.binary
-            return self._judge(sub, name, mode, t0, on_test, prior, deadline, binary)
-        finally:
-            shutil.rmtree(binary_dir, ignore_errors=True)
+        built = self.compiled(sub)  # a compiled language: compiled once, before any test
+        if not built.ok:
+            result = self._all(name, Verdict.CE, built.message, mode, on_test)
+            result.judge_time_s = time.monotonic() - t0
+            return result
+        return self._judge(sub, name, mode, t0, on_test, prior, deadline, built.binary)
+
+    def compiled(self, sub: Submission) -> CompileResult:
+        """``sub`` compiled in the compile jail; the last submission's build is kept (``stress``
+        judges one submission many times: it is compiled once), its binary removed with the next
+        build or with this judge."""
+        key = (sub.language.name, hashlib.sha256(sub.source.encode("utf-8", "surrogatepass")).hexdigest())
+        if self._build is not None and self._build[0] == key:
+            return self._build[1]
+        if self._build is not None:
+            self._build[2]()  # remove the previous binary
+        folder = build_dir()
+        done = weakref.finalize(self, _remove_build, folder, os.getpid())
+        built = compile_source(sub.source, sub.language, folder, hide=self.hide, trusted=self.trusted,
+                               limits=self.compile_limits, wall_s=2 * self.compile_limits.cpu_s)
+        self._build = (key, built, done)
+        return built
 
     def _judge(self, sub: Submission, name: str, mode: str, t0: float, on_test: Callable[[TestResult], None] | None,
                prior: dict[str, TestResult], deadline: float | None, binary: str = "") -> JudgeResult:
@@ -327,6 +338,12 @@ class Judge:
         r.message = clean(r.message, 4000, newlines=True)  # checker messages quote student data
         r.hidden_message = clean(r.hidden_message, 300)
         return r, idle
+
+
+def _remove_build(folder: str, owner: int) -> None:
+    """Remove a build folder, in the process that made it only (a forked worker leaves it)."""
+    if os.getpid() == owner:
+        shutil.rmtree(folder, ignore_errors=True)
 
 
 def judge_file(problem: str | Problem, path: str | Path, hide: Sequence[str] = ()) -> JudgeResult:
