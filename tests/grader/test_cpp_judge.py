@@ -15,9 +15,7 @@ import json
 import os
 import subprocess
 import sys
-from pathlib import Path
 
-import pytest
 
 import grader.contest.judge as judge_module
 from grader.classroom.similarity import analyse
