@@ -231,12 +231,9 @@ class Sandbox:
     other installed copy of the same modules, and the engines they wrap, are covered too.
     ``trusted`` (default: ``$GRADER_TRUSTED`` is ``1``) allows running without a kernel jail where
     none can be built, instead of raising :class:`JailUnavailable` (a student's own code only).
-    ``profile="compile"`` builds the compile jail (:mod:`grader.jail.profiles`): only the system
-    trees, new processes allowed, the writable folder :attr:`scratch` (host side) seen as
-    ``profiles.COMPILE_WORKDIR``. ``program``: a binary on the host, shown read-only at
-    ``profiles.JAIL_PROGRAM`` in the run jail. ``no_processes``: the seccomp filter kills new
-    processes (default: only where no cgroup charges them, an ordinary account). The compile jail
-    and a program need bubblewrap: the ``namespaces`` fallback refuses them (:class:`JailUnavailable`).
+    ``profile="compile"``: the compile jail (:mod:`grader.jail.profiles`; host folder :attr:`scratch`);
+    ``program``: a binary shown read-only in the run jail; ``no_processes``: the seccomp filter kills
+    new processes (default: without a cgroup). Both need bubblewrap (``namespaces`` refuses them).
     """
 
     def __init__(self, limits: Limits, hide: Sequence[str | os.PathLike] = (), cover: Sequence[str] = (),
@@ -318,8 +315,7 @@ class Sandbox:
         self.close()
 
     def _check_profile(self) -> None:
-        """The compile jail and a compiled program need bubblewrap (root's ``namespaces`` fallback
-        has neither a compile view nor a place for the binary): refuse in words."""
+        """The compile jail and a program need bubblewrap (``namespaces`` has no view for them)."""
         if self.kind == "namespaces" and (self.profile == "compile" or self.program):
             raise JailUnavailable("compiling and running a compiled submission need the bubblewrap jail (apt-get "
                                   f"install bubblewrap; {JAIL_ENV}={os.environ.get(JAIL_ENV, '')!r} gives the "
