@@ -143,6 +143,9 @@ class Judge:
         self.stderr_lines = stderr_lines
         self.compile_limits = compile_limits or COMPILE_LIMITS
         self._build: tuple[tuple[str, str], CompileResult, weakref.finalize] | None = None
+        #: keep the last build between judgings (``stress`` judges one submission many times; it
+        #: calls :meth:`drop_build` when done); otherwise the binary is removed after each judging
+        self.keep_build = False
         self.problem = load_problem(problem) if isinstance(problem, str) else problem
         self.trusted = trusted
         self.stop_at_first_failure = stop_at_first_failure
@@ -198,22 +201,30 @@ class Judge:
             return self._all(name, Verdict.CE, sub.missing_entry_message(self.problem.entry), mode, on_test)
         if not sub.compiled or all(t.name in prior for t in self.tests):
             return self._judge(sub, name, mode, t0, on_test, prior, deadline)
-        built = self.compiled(sub)  # a compiled language: compiled once, before any test
-        if not built.ok:
-            result = self._all(name, Verdict.CE, built.message, mode, on_test)
-            result.judge_time_s = time.monotonic() - t0
-            return result
-        return self._judge(sub, name, mode, t0, on_test, prior, deadline, built.binary)
+        try:
+            built = self.compiled(sub)  # a compiled language: compiled once, before any test
+            if not built.ok:
+                result = self._all(name, Verdict.CE, built.message, mode, on_test)
+                result.judge_time_s = time.monotonic() - t0
+                return result
+            return self._judge(sub, name, mode, t0, on_test, prior, deadline, built.binary)
+        finally:
+            if not self.keep_build:
+                self.drop_build()
+
+    def drop_build(self) -> None:
+        """Remove the kept build (the binary of the last compiled submission), if any."""
+        if self._build is not None:
+            self._build[2]()
+            self._build = None
 
     def compiled(self, sub: Submission) -> CompileResult:
-        """``sub`` compiled in the compile jail; the last submission's build is kept (``stress``
-        judges one submission many times: it is compiled once), its binary removed with the next
-        build or with this judge."""
+        """``sub`` compiled in the compile jail; the build is kept until :meth:`drop_build`, the next
+        build or the end of this judge (with :attr:`keep_build`, ``stress`` compiles once)."""
         key = (sub.language.name, hashlib.sha256(sub.source.encode("utf-8", "surrogatepass")).hexdigest())
         if self._build is not None and self._build[0] == key:
             return self._build[1]
-        if self._build is not None:
-            self._build[2]()  # remove the previous binary
+        self.drop_build()
         folder = build_dir()
         done = weakref.finalize(self, _remove_build, folder, os.getpid())
         built = compile_source(sub.source, sub.language, folder, hide=self.hide, trusted=self.trusted,

@@ -499,7 +499,7 @@ class Sandbox:
         plan, uid, lim = self._plan, self.uid, self.limits
         # an account's jail sets RLIMIT_NPROC inside its user namespace (inner_nproc); trusted: as before
         nproc = lim.processes + (BWRAP_PROCESSES if self.kind == "bwrap" else 0) if self.root_mode else \
-            (lim.processes if self.kind == "trusted" else -1)
+            (lim.processes if self.kind == "trusted" and self.profile == "run" else -1)
         address_mb = self.address_space_mb()
         argv, fds, seccomp_fd = list(argv), list(pass_fds), -1
         if plan is not None and plan.bwrap:
