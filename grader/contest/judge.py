@@ -26,7 +26,7 @@ from typing import Callable, Sequence
 
 from ..judging import hidden_feedback
 from ..judging.check_budget import CheckTimeout, check_seconds, cpu_budget
-from ..judging.compile import COMPILE_LIMITS, CompileResult, build_dir, compile_source
+from ..judging.compile import COMPILE_LIMITS, COMPILE_WALL_S, CompileResult, build_dir, compile_source
 from ..problems import Problem, TestCase, load_problem
 from ..judging.runner import FunctionWorker, RunOutcome, idle_budget_for, output_paths, run_stdio
 from ..jail import Limits, Sandbox
@@ -139,7 +139,7 @@ class Judge:
         ``stderr_lines``: a failing test keeps the last that many lines of the submission's stderr
         in ``TestResult.stderr`` (0: none). ``compile_limits``: the compile step's limits for a
         compiled language (default :data:`grader.judging.compile.COMPILE_LIMITS`; its wall-clock
-        cap is twice the CPU time)."""
+        cap is :data:`grader.judging.compile.COMPILE_WALL_S`, or twice the CPU time if longer)."""
         self.stderr_lines = stderr_lines
         self.compile_limits = compile_limits or COMPILE_LIMITS
         self._build: tuple[tuple[str, str], CompileResult, weakref.finalize] | None = None
@@ -228,7 +228,7 @@ class Judge:
         folder = build_dir()
         done = weakref.finalize(self, _remove_build, folder, os.getpid())
         built = compile_source(sub.source, sub.language, folder, hide=self.hide, trusted=self.trusted,
-                               limits=self.compile_limits, wall_s=2 * self.compile_limits.cpu_s)
+                               limits=self.compile_limits, wall_s=max(COMPILE_WALL_S, 2 * self.compile_limits.cpu_s))
         self._build = (key, built, done)
         return built
 

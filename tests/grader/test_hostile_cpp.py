@@ -35,7 +35,7 @@ from .test_hostile import shows_safely
 CORPUS = sorted((HERE / "hostile_cpp").glob("*.cpp"))
 FIXTURE = HERE / "fixtures" / "tiny-closest-pair"
 #: Small compile limits: a bomb is stopped within seconds (the judge's own are 30 s and 1 GiB).
-COMPILE = Limits(cpu_s=8.0, memory_mb=384, output_mb=64, open_files=128, processes=16, disk_mb=48, shm_mb=1)
+COMPILE = Limits(cpu_s=4.0, memory_mb=384, output_mb=64, open_files=128, processes=16, disk_mb=48, shm_mb=1)
 SECRET = "SECRET-c0ffee-7e11 instructor only; grades: mallory 0\n"
 _results: dict[str, object] = {}
 
@@ -111,6 +111,13 @@ def test_compiler_messages_are_capped_and_escaped(judge, secret, tmp_path_factor
     assert len(flood) < 4200, len(flood)
     escaped = judged("escape_in_error.cpp", judge, secret, tmp_path_factory).tests[0].message
     assert "\x1b" not in escaped and "\\x1b" in escaped, escaped
+
+
+@pytest.mark.parametrize("name", ["template_bomb.cpp", "preprocessor_bomb.cpp"])
+def test_compiler_bombs_stop_at_a_limit(name, judge, secret, tmp_path_factory):
+    message = judged(name, judge, secret, tmp_path_factory).tests[0].message
+    signs = ("more than", "memory exhausted", "out of memory", "signal terminated", "CPU")
+    assert any(s in message for s in signs), message
 
 
 def test_run_time_failures_are_explained(judge, secret, tmp_path_factory):
