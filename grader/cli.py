@@ -237,9 +237,12 @@ def build_parser() -> argparse.ArgumentParser:
     p = sub.add_parser("list", help="list problems")
     p.add_argument("--json", action="store_true")
     p.set_defaults(func=_cmd_list)
-    p = sub.add_parser("judge", help="judge one submission")
+    p = sub.add_parser("judge", help="judge one submission",
+                       description="Judge one submission: a .py file, an .ipynb notebook, or a C++ file (.cpp, .cc, "
+                                   ".cxx: compiled once with g++ -std=gnu++17 -O2 -static in the compile jail, a "
+                                   "compile error is CE, then run per test in the jail, reading standard input).")
     p.add_argument("problem")
-    p.add_argument("file")
+    p.add_argument("file", help="the submission (.py, .ipynb, .cpp, .cc or .cxx)")
     p.add_argument("--json", action="store_true", help="one JSON object instead of the table")
     p.add_argument("--report", help="also write an HTML report here")
     p.add_argument("--trusted", action="store_true",
