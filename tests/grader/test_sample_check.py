@@ -11,7 +11,7 @@ import shutil
 import pytest
 
 from grader.contest import sample_check
-from grader.judging.languages import CPP, LANGUAGES, accepted_files
+from grader.judging.languages import accepted_files
 from grader.problems import REPO
 
 SOLUTIONS = REPO / "solutions" / "delaunay"
@@ -54,7 +54,6 @@ def test_a_file_the_judge_does_not_take_gets_a_verdict(tmp_path):
     assert result.verdict == "CE" and accepted_files() in result.tests[0].message
 
 
-@pytest.mark.skipif(CPP not in LANGUAGES, reason="until C++ is in LANGUAGES")
 def test_cpp_on_the_samples(monkeypatch, tmp_path):
     shutil.copy(SOLUTIONS / "accepted.cpp", tmp_path / "mine.cpp")
     html = _magic(monkeypatch, tmp_path, "delaunay mine.cpp")
