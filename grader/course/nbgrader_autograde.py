@@ -205,27 +205,29 @@ def late_factor(problem_id: str, seconds_late: float) -> tuple[float, str]:
     >>> late_factor("bowyer-watson-timed", 600)
     (0.5, 'late: score x0.5')
     """
-    from ..classroom.timed import _settings
+    from ..classroom.timed import _settings, late_factor as timed_late_factor
 
     problem = _problem(problem_id)
     if not problem.timed or seconds_late <= 0:
         return 1.0, "on time"
-    t = _settings(problem_id)
-    if seconds_late <= float(t["grace_s"]):
-        return 1.0, "on time"
-    if t["late_policy"] == "reject":
-        return 0.0, "late: rejected"
-    if t["late_policy"] == "multiplier":
-        return float(t["late_multiplier"]), f"late: score x{t['late_multiplier']}"
-    return 1.0, "late (accepted)"
+    return timed_late_factor(_settings(problem_id), seconds_late)
 
 
 class CourseLatePolicy(LateSubmissionPlugin):
     """nbgrader late-submission plugin: a timed problem's policy from its ``course.yaml``; other
-    assignments fall back to nbgrader's ``penalty_method``."""
+    assignments fall back to nbgrader's ``penalty_method``. A student's extension in the course's
+    ``extensions.yaml`` (:mod:`grader.classroom.extensions`) is taken off the time late first."""
 
     def late_submission_penalty(self, student_id, score, total_seconds_late):
+        from ..classroom.extensions import extra_seconds
+
         assignment = getattr(self.parent, "assignment_id", "")
+        extra = extra_seconds(student_id, assignment) if assignment else 0.0
+        if extra:
+            self.log.info("%s: extension of %s s on %s", student_id, extra, assignment)
+            total_seconds_late = max(0.0, total_seconds_late - extra)
+            if total_seconds_late <= 0:
+                return 0.0
         try:
             timed = bool(_problem(assignment).timed)
         except ValueError:
