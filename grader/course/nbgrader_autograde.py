@@ -25,6 +25,7 @@ Example:
 from __future__ import annotations
 
 import hashlib
+import json
 import os
 import re
 import subprocess
@@ -46,6 +47,8 @@ from ..contest.sample_check import is_sample_group
 from ..jail import JailUnavailable, require_jail
 from ..contest.judge import Judge
 from ..problems import Problem, check_course, course_folder, load_problem, problems_root, using_course
+from ..classroom import regrade
+from ..classroom.regrade import fingerprints, version
 from ..classroom.store import ResultStore
 from ..judging.submissions import Submission, SubmissionError
 from ..judging.verdicts import DESCRIPTIONS, JudgeResult, TestResult, Verdict
@@ -53,6 +56,7 @@ from ..judging.verdicts import DESCRIPTIONS, JudgeResult, TestResult, Verdict
 STORE_NAME = "judged.sqlite"
 _FLOAT = re.compile(r"(?<![\w.])[-+]?(?:\d+\.\d*|\.\d+|\d+(?=[eE]))(?:[eE][-+]?\d+)?|\b(?:inf|nan)\b")
 _problems: dict[str, Problem] = {}
+_fps: dict[str, dict] = {}
 
 
 def mask_numbers(message: str) -> str:
@@ -78,9 +82,35 @@ def nbgrader_course_root(config) -> Path:
     return Path(root or os.getcwd()).resolve()
 
 
+def _fingerprints(problem: Problem) -> dict[str, dict]:
+    key = f"{problem.path.resolve()}\0fingerprints"
+    if key not in _fps:
+        _fps[key] = fingerprints(problem)
+    return _fps[key]
+
+
 def code_key(problem: Problem, source: str) -> str:
-    """The store key of a piece of code for a problem (changes when the code or the tests change)."""
+    """The store key of a piece of code for a problem: ``<code hash>-<problem version>`` (the version
+    changes when a group's tests, the checker, the limits or the points change; not when the
+    statement does: :mod:`grader.classroom.regrade`)."""
+    return f"{hashlib.sha256(f'{problem.id}{chr(0)}{source}'.encode()).hexdigest()[:16]}-" \
+           f"{version(_fingerprints(problem))}"
+
+
+def legacy_code_key(problem: Problem, source: str) -> str:
+    """The key a store made before per-group keys used: the code and the whole package's digest."""
     return hashlib.sha256(f"{problem.id}\0{problem.digest()}\0{source}".encode()).hexdigest()[:16]
+
+
+def _adopt_legacy(store: ResultStore, student: str, problem: Problem, source: str, key: str) -> None:
+    """Results stored under the previous key of this very code and package (nothing changed since)
+    are taken over under the new key instead of being judged again."""
+    old = legacy_code_key(problem, source)
+    if not store.is_done(student, problem.id, old) or store.prior(student, problem.id, key):
+        return
+    cols = "test, grp, verdict, time_s, memory_mb, message, input_preview, judged_at, hidden_message"
+    store.db.execute(f"INSERT OR IGNORE INTO results (student, problem, sha, {cols}) SELECT student, problem, ?, "
+                     f"{cols} FROM results WHERE student=? AND problem=? AND sha=?", (key, student, problem.id, old))
 
 
 def collection_time(folder: Path) -> float | None:
@@ -111,7 +141,14 @@ def judge_notebook_file(problem_id: str, path: Path, student: str, store_path: P
         prior = store.prior(student, problem.id, key)
         if store.is_done(student, problem.id, key) and len(prior) == len(problem.tests()):
             return JudgeResult(problem.id, str(path), [prior[t.name] for t in problem.tests()], problem.group_points)
-        store.begin(student, problem.id, str(path), key, time.time() if submitted_at is None else submitted_at)
+        _adopt_legacy(store, student, problem, code, key)
+        fps = _fingerprints(problem)
+        prev, changed = regrade.carry_over(store, student, problem, key.split("-")[0], key, fps)
+        if prev is not None:
+            regrade.start(store, problem.id, student, prev, key, changed)
+        prior = store.prior(student, problem.id, key)
+        store.begin(student, problem.id, str(path), key, time.time() if submitted_at is None else submitted_at,
+                    json.dumps(fps, sort_keys=True))
         judge = Judge(problem, hide=[*hide, str(path.resolve().parent), str(store_path.resolve().parent)])
         result = judge.judge_path(path, on_test=lambda r: store.add_test(student, problem.id, key, r), prior=prior)
         store.finish(student, problem.id, key, result)
@@ -350,6 +387,12 @@ def _grade_course(problem_id: str, submitted: Path, course_root: Path, jobs: int
             r = out[-1]
             _say(progress, f"[{len(out)}/{len(collected)}] {r['student']}: {r['verdict']} "
                            f"{r.get('score', '')}/{r.get('max_score', '')}")
+    store = ResultStore(store_path)
+    try:
+        for d in regrade.finish(store, problem_id):  # whose score moved since the tests were changed
+            _say(progress, f"{problem_id}: regraded " + regrade.diff_line(d))
+    finally:
+        store.close()
     if autograde:
         _say(progress, f"{problem_id}: nbgrader autograde --force in {course_root} ({len(collected)} notebook(s); "
                        "it reads the stored results and applies the late policy)")
