@@ -157,20 +157,29 @@ def judge_notebook_file(problem_id: str, path: Path, student: str, store_path: P
         store.close()
 
 
-def _line(t: TestResult, hidden: bool) -> str:
-    """One test's feedback line. A hidden test shows only its ``hidden_message`` (the kind of mistake:
-    never the checker's detail, the student's exception text or prints; :mod:`grader.judging.hidden_feedback`)."""
-    if hidden:
-        msg = "" if t.verdict in (Verdict.AC,) else mask_numbers(t.hidden_message or DESCRIPTIONS.get(str(t.verdict), ""))
+def test_line(t: TestResult, hidden: bool, level: str = "message") -> str:
+    """One test's feedback line at a feedback ``level`` (:mod:`grader.judging.feedback_policy`).
+    A hidden test shows at most its ``hidden_message`` (the kind of mistake: never the checker's
+    detail, the student's exception text or prints; :mod:`grader.judging.hidden_feedback`), and
+    never its input, whatever the level."""
+    failed = t.verdict != Verdict.AC
+    if level == "verdict" or not failed:
+        msg = ""
+    elif hidden:
+        msg = mask_numbers(t.hidden_message or DESCRIPTIONS.get(str(t.verdict), ""))
     else:
         msg = (t.message.splitlines() or [""])[0][:300]
-    return f"{t.name:16} {str(t.verdict):3} {t.time_s:7.3f} s  {msg}".rstrip()
+    line = f"{t.name:16} {str(t.verdict):3} {t.time_s:7.3f} s  {msg}".rstrip()
+    if level == "input" and not hidden and failed and t.verdict != Verdict.SKIPPED and t.input_preview:
+        line += "\n    input:\n" + "\n".join("    " + ln for ln in t.input_preview.splitlines()[:24])
+    return line
 
 
-def group_output(result: JudgeResult, group: str, points: int) -> dict:
-    """The nbgrader output of a group's test cell: stdout when passed (full points), an error when not."""
+def group_output(result: JudgeResult, group: str, points: int, level: str = "message") -> dict:
+    """The nbgrader output of a hidden group's test cell at a feedback ``level``: stdout when passed
+    (full points), an error when not."""
     tests = [t for t in result.tests if t.group == group]
-    lines = [_line(t, hidden=True) for t in tests]
+    lines = [test_line(t, hidden=True, level=level) for t in tests]
     if result.group_passed(group):
         return nbformat.v4.new_output("stream", name="stdout",
                                       text=f"group {group}: all {len(tests)} tests accepted, {points}/{points} points\n"
@@ -184,9 +193,11 @@ def group_output(result: JudgeResult, group: str, points: int) -> dict:
 
 
 def write_results(nb: nbformat.NotebookNode, problem: Problem, result: JudgeResult) -> nbformat.NotebookNode:
-    """Put ``result`` into the notebook: each scored group's test cell, and the sample table in the check cell."""
+    """Put ``result`` into the notebook: each scored group's test cell, and the sample table in the
+    check cell, each at its group's feedback level (``course.yaml`` ``feedback``)."""
     by_cell = {group_cell_id(g.name): g for g in problem.groups if g.points > 0}
-    samples = [t for t in result.tests if any(is_sample_group(g) and g.name == t.group for g in problem.groups)]
+    public = {g.name for g in problem.groups if is_sample_group(g)}
+    samples = [t for t in result.tests if t.group in public]
     for cell in nb.cells:
         nbg = cell.get("metadata", {}).get("nbgrader", {})
         if cell.get("cell_type") != "code":
@@ -194,10 +205,10 @@ def write_results(nb: nbformat.NotebookNode, problem: Problem, result: JudgeResu
         gid = nbg.get("grade_id")
         if nbg.get("grade") and gid in by_cell:
             g = by_cell[gid]
-            cell.outputs = [group_output(result, g.name, g.points)]
+            cell.outputs = [group_output(result, g.name, g.points, problem.feedback_level(g.name))]
             cell.execution_count = 1
         elif gid == CHECK_ID:
-            text = "\n".join(_line(t, hidden=False) for t in samples)
+            text = "\n".join(test_line(t, hidden=False, level=problem.feedback_level(t.group)) for t in samples)
             cell.outputs = [nbformat.v4.new_output("stream", name="stdout",
                                                    text=f"samples, as judged at grading time:\n{text}\n")]
     return nb
