@@ -4,7 +4,7 @@
     python -m grader judge PROBLEM FILE [--json] [--report out.html]
     python -m grader grade PROBLEM SUBMISSIONS_DIR [--db results.sqlite] [--jobs N] [--csv grades.csv]
                            [--reports DIR] [--scheduler tcp://host:8786] [--similarity]
-    python -m grader regrade PROBLEM SUBMISSIONS_DIR [--db results.sqlite] [--student S]... [--diff diff.csv]
+    python -m grader regrade PROBLEM SUBMISSIONS_DIR [--db results.sqlite] [--student S]... [--all] [--diff diff.csv]
     python -m grader export-grades --roster roster.csv --assignments lms-map.csv [--gradebook gradebook.db]
                                    [--db results.sqlite]... --out grades/
     python -m grader similarity PROBLEM SUBMISSIONS_DIR [--reports DIR] [--reference DIR]... [--threshold 0.5]
@@ -117,7 +117,7 @@ def _cmd_regrade(a: argparse.Namespace) -> int:
     from .classroom.classgrade import grade_class
 
     summaries = grade_class(a.problem, a.submissions, a.db, jobs=a.jobs, csv_path=a.csv, progress=not a.quiet,
-                            regrade_students=a.student or [], diff_path=a.diff)
+                            regrade_students=a.student or ([] if a.all else None), diff_path=a.diff)
     moved = [s for s in summaries if "regrade" in s]
     for s in sorted(moved, key=lambda s: s["student"]):
         from .classroom.regrade import diff_line
@@ -278,14 +278,16 @@ def build_parser() -> argparse.ArgumentParser:
     _similarity_options(p)
     p.set_defaults(func=_cmd_grade)
     p = sub.add_parser("regrade", help="judge students again on demand and show whose score moved and why",
-                       description="Judge every student (or each --student) of SUBMISSIONS/<student>/<file> again "
-                                   "from scratch, and any submission whose groups changed; print and save each "
-                                   "student's diff (old score, new score, which groups changed and why). An "
-                                   "interrupted regrade resumes when run again.")
+                       description="Judge again the groups whose tests, checker or limits changed since "
+                                   "SUBMISSIONS/<student>/<file> was graded (nothing else), and each --student (or "
+                                   "with --all everyone) from scratch; print and save each student's diff (old "
+                                   "score, new score, which groups changed and why). An interrupted regrade "
+                                   "resumes when run again.")
     p.add_argument("problem")
     p.add_argument("submissions")
     p.add_argument("--db", default="results.sqlite")
-    p.add_argument("--student", action="append", help="only this student (repeatable; default: everyone)")
+    p.add_argument("--student", action="append", help="judge this student again from scratch (repeatable)")
+    p.add_argument("--all", action="store_true", help="judge every student again from scratch")
     p.add_argument("--diff", help="also write the diff as CSV here")
     p.add_argument("--csv", help="the grades CSV, as `grade --csv`")
     p.add_argument("--jobs", type=int, default=1)
