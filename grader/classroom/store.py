@@ -79,12 +79,6 @@ class ResultStore:
         return self.db.execute("SELECT first_seen FROM seen WHERE student=? AND problem=? AND content=?",
                                (student, problem, content)).fetchone()[0]
 
-    def judged_under_other_tests(self, student: str, problem: str, content: str, key: str) -> bool:
-        """Was this content graded under another version of the problem (key ``content-digest``)?"""
-        return self.db.execute("SELECT 1 FROM submissions WHERE student=? AND problem=? AND status='done' "
-                               "AND substr(sha, 1, ?) = ? AND sha != ?",
-                               (student, problem, len(content) + 1, content + "-", key)).fetchone() is not None
-
     def add_test(self, student: str, problem: str, sha: str, r: TestResult) -> None:
         self.db.execute("INSERT OR REPLACE INTO results (student, problem, sha, test, grp, verdict, time_s, memory_mb, "
                         "message, input_preview, judged_at, hidden_message) VALUES (?,?,?,?,?,?,?,?,?,?,?,?)",
