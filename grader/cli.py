@@ -7,6 +7,8 @@
     python -m grader regrade PROBLEM SUBMISSIONS_DIR [--db results.sqlite] [--student S]... [--all] [--diff diff.csv]
     python -m grader export-grades --roster roster.csv --assignments lms-map.csv [--gradebook gradebook.db]
                                    [--db results.sqlite]... --out grades/
+    python -m grader deadlines publish FOLDER [--course DIR]     (root: each student's own deadlines file)
+    python -m grader deadlines show [--folder DIR]               (a student: their own deadlines)
     python -m grader similarity PROBLEM SUBMISSIONS_DIR [--reports DIR] [--reference DIR]... [--threshold 0.5]
     python -m grader timed start PROBLEM STUDENT [--db timed.sqlite]
     python -m grader timed status PROBLEM STUDENT [--db timed.sqlite]
@@ -137,6 +139,26 @@ def _cmd_export_grades(a: argparse.Namespace) -> int:
         print(line, file=sys.stderr)
     for f in report["files"]:
         print(f)
+    return 0
+
+
+def _cmd_deadlines(a: argparse.Namespace) -> int:
+    from .course import deadlines
+    from .problems import course_folder
+
+    if a.action == "publish":
+        if not a.folder:
+            raise ValueError("deadlines publish needs the FOLDER to write into")
+        course = Path(a.course) if a.course else course_folder()
+        if course is None:
+            raise ValueError("no course here: pass --course DIR (the folder with nbgrader_config.py)")
+        written, skipped = deadlines.publish(course, a.folder)
+        print(f"{len(written)} students' deadlines written to {a.folder}")
+        for s in skipped:
+            print(f"{s}: no account here, not written", file=sys.stderr)
+        return 0
+    for text in deadlines.show(a.folder):
+        print(text)
     return 0
 
 
@@ -304,6 +326,11 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--db", action="append", help="a results store (repeatable)")
     p.add_argument("--out", required=True, help="the folder to write into")
     p.set_defaults(func=_cmd_export_grades)
+    p = sub.add_parser("deadlines", help="each student's own deadlines: publish (root) / show (a student)")
+    p.add_argument("action", choices=["publish", "show"])
+    p.add_argument("folder", nargs="?", help="where the files are (default for show: next to the problems)")
+    p.add_argument("--course", help="publish: the course folder (default: the one you are in)")
+    p.set_defaults(func=_cmd_deadlines)
     p = sub.add_parser("similarity", help="similarity report of a class: who shares code with whom and the tutorial",
                        description="Compare every pair of SUBMISSIONS/<student>/<file> (or nbgrader's collected "
                                    "submitted/<student>/PROBLEM/PROBLEM.ipynb: the solution cells) and every "
