@@ -38,7 +38,7 @@ MAX_DRAW_ITEMS = 3000
 
 def is_sample_group(group: Group) -> bool:
     """Sample groups are public (committed under ``data/sample``) and worth no points."""
-    return group.points == 0 and bool(group.data) and "sample" in Path(group.data).parts
+    return group.public
 
 
 def sample_problem(problem: Problem) -> Problem:
