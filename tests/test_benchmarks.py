@@ -84,8 +84,9 @@ def test_bench_judge_overhead_quick(tmp_path):
 
 @pytest.mark.skipif(shutil.which("g++") is None, reason="needs g++ (Debian's g++ 12)")
 def test_bench_cpp_solutions_quick(tmp_path):
-    """Quick mode on delaunay: every C++ solution compiled once and checked by the problem's checker;
-    the table's shape and the expected verdicts (expected_cpp.yaml), never its timings."""
+    """Quick mode on delaunay: every C++ solution compiled once and checked by the problem's checker
+    under the problem's C++ limit; the table's shape and the expected verdicts (expected_cpp.yaml),
+    never its timings."""
     out = tmp_path / "cpp.json"
     run = subprocess.run([sys.executable, "benchmarks/bench_cpp_solutions.py", "--problems", "delaunay", "--quick",
                           "--json", str(out)],
@@ -104,7 +105,14 @@ def test_bench_cpp_solutions_quick(tmp_path):
         verdict, *groups = str(want).split()
         row = rows[name]
         assert row[1] == verdict and row[-1] == "yes", row
-    data = {r["file"]: r for r in json.loads(out.read_text())}
+    report = json.loads(out.read_text())
+    data = {r["file"]: r for r in report["results"]}
+    (summary,) = report["problems"]
+    # the cap is the problem's C++ limit from course.yaml, and the margins are printed
+    assert summary["problem"] == "delaunay" and summary["limit_source"] == "course.yaml", summary
+    assert f"C++ limit {summary['limit_s']:g} s per test (course.yaml)" in run.stdout
+    assert "margins: limit " in run.stdout and "== summary:" in run.stdout
+    assert summary["quadratic_verdict"] == "TLE"
     assert data["accepted.cpp"]["verdict"] == "AC" and data["accepted.cpp"]["groups_failed"] == []
     assert data["compile_error.cpp"]["verdict"] == "CE"
     assert "degenerate" in data["wrong_double.cpp"]["groups_failed"]

@@ -5,7 +5,7 @@
 // BEGIN PREDICATES
 // ---- exact predicates: a floating-point filter with Shewchuk's error bounds, else exact ----
 // The filter is trusted only when every coordinate difference d is 0 or 1e-60 <= |d| <= 1e60:
-// then no product of up to four differences underflows or overflows, every rounding is relative
+// then no product of up to five differences underflows or overflows, every rounding is relative
 // and the bound holds. Otherwise (coordinates near 1e-300 or 1e300) the sign is computed exactly:
 // each double is an integer mantissa times a power of two, shifted onto the smallest exponent of
 // the predicate's inputs, and the determinant is evaluated on a small big-integer type.
@@ -222,6 +222,104 @@ inline int dot2(double ax, double ay, double bx, double by, double cx, double cy
     const double v[6] = {ax, ay, bx, by, cx, cy};
     std::vector<Big> B = to_big(v, 6);
     return sign(add(mul(sub(B[0], B[4]), sub(B[2], B[4])), mul(sub(B[1], B[5]), sub(B[3], B[5]))));
+}
+
+// ---- 3D: orient3d and insphere (Shewchuk's conventions and first-stage error bounds) ----
+const double O3D_BOUND = (7.0 + 56.0 * EPS) * EPS;
+const double ISP_BOUND = (16.0 + 224.0 * EPS) * EPS;
+
+inline Big det3(const Big& ax, const Big& ay, const Big& az, const Big& bx, const Big& by, const Big& bz,
+                const Big& cx, const Big& cy, const Big& cz) {
+    Big t1 = mul(ax, sub(mul(by, cz), mul(bz, cy)));
+    Big t2 = mul(ay, sub(mul(bx, cz), mul(bz, cx)));
+    Big t3 = mul(az, sub(mul(bx, cy), mul(by, cx)));
+    return add(sub(t1, t2), t3);
+}
+
+inline int orient3d_exact(const double* a, const double* b, const double* c, const double* d) {
+    const double v[12] = {a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2], d[0], d[1], d[2]};
+    std::vector<Big> B = to_big(v, 12);
+    Big r[9];
+    for (int i = 0; i < 3; ++i)
+        for (int k = 0; k < 3; ++k) r[3 * i + k] = sub(B[3 * i + k], B[9 + k]);
+    return sign(det3(r[0], r[1], r[2], r[3], r[4], r[5], r[6], r[7], r[8]));
+}
+
+// > 0 when d lies below the plane through a, b, c (counter-clockwise seen from above), < 0 above,
+// 0 coplanar (exact); points are double[3]
+inline int orient3d(const double* a, const double* b, const double* c, const double* d) {
+    double adx = a[0] - d[0], bdx = b[0] - d[0], cdx = c[0] - d[0];
+    double ady = a[1] - d[1], bdy = b[1] - d[1], cdy = c[1] - d[1];
+    double adz = a[2] - d[2], bdz = b[2] - d[2], cdz = c[2] - d[2];
+    if (safe(adx) && safe(bdx) && safe(cdx) && safe(ady) && safe(bdy) && safe(cdy) && safe(adz) && safe(bdz) &&
+        safe(cdz)) {
+        double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy, cdxady = cdx * ady;
+        double adxcdy = adx * cdy, adxbdy = adx * bdy, bdxady = bdx * ady;
+        double det = adz * (bdxcdy - cdxbdy) + bdz * (cdxady - adxcdy) + cdz * (adxbdy - bdxady);
+        double perm = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * std::fabs(adz) +
+                      (std::fabs(cdxady) + std::fabs(adxcdy)) * std::fabs(bdz) +
+                      (std::fabs(adxbdy) + std::fabs(bdxady)) * std::fabs(cdz);
+        double bound = O3D_BOUND * perm + 1e-290;  // + 1e-290: covers any gradual underflow
+        if (det > bound) return 1;
+        if (-det > bound) return -1;
+        if (perm == 0) return 0;
+    }
+    return orient3d_exact(a, b, c, d);
+}
+
+inline int insphere_exact(const double* a, const double* b, const double* c, const double* d, const double* e) {
+    const double v[15] = {a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2],
+                          d[0], d[1], d[2], e[0], e[1], e[2]};
+    std::vector<Big> B = to_big(v, 15);
+    Big r[12], lift[4];
+    for (int i = 0; i < 4; ++i) {
+        for (int k = 0; k < 3; ++k) r[3 * i + k] = sub(B[3 * i + k], B[12 + k]);
+        lift[i] = add(add(mul(r[3 * i], r[3 * i]), mul(r[3 * i + 1], r[3 * i + 1])), mul(r[3 * i + 2], r[3 * i + 2]));
+    }
+    const Big *A = r, *Bq = r + 3, *C = r + 6, *D = r + 9;
+    Big abc = det3(A[0], A[1], A[2], Bq[0], Bq[1], Bq[2], C[0], C[1], C[2]);
+    Big dab = det3(D[0], D[1], D[2], A[0], A[1], A[2], Bq[0], Bq[1], Bq[2]);
+    Big cda = det3(C[0], C[1], C[2], D[0], D[1], D[2], A[0], A[1], A[2]);
+    Big bcd = det3(Bq[0], Bq[1], Bq[2], C[0], C[1], C[2], D[0], D[1], D[2]);
+    Big det = add(sub(mul(lift[3], abc), mul(lift[2], dab)), sub(mul(lift[1], cda), mul(lift[0], bcd)));
+    return sign(det);
+}
+
+// > 0 when e lies strictly inside the sphere through a, b, c, d (orient3d(a, b, c, d) > 0), 0 on it
+inline int insphere(const double* a, const double* b, const double* c, const double* d, const double* e) {
+    double aex = a[0] - e[0], bex = b[0] - e[0], cex = c[0] - e[0], dex = d[0] - e[0];
+    double aey = a[1] - e[1], bey = b[1] - e[1], cey = c[1] - e[1], dey = d[1] - e[1];
+    double aez = a[2] - e[2], bez = b[2] - e[2], cez = c[2] - e[2], dez = d[2] - e[2];
+    if (safe(aex) && safe(bex) && safe(cex) && safe(dex) && safe(aey) && safe(bey) && safe(cey) && safe(dey) &&
+        safe(aez) && safe(bez) && safe(cez) && safe(dez)) {
+        double aexbey = aex * bey, bexaey = bex * aey, ab = aexbey - bexaey;
+        double bexcey = bex * cey, cexbey = cex * bey, bc = bexcey - cexbey;
+        double cexdey = cex * dey, dexcey = dex * cey, cd = cexdey - dexcey;
+        double dexaey = dex * aey, aexdey = aex * dey, da = dexaey - aexdey;
+        double aexcey = aex * cey, cexaey = cex * aey, ac = aexcey - cexaey;
+        double bexdey = bex * dey, dexbey = dex * bey, bd = bexdey - dexbey;
+        double abc = aez * bc - bez * ac + cez * ab;
+        double bcd = bez * cd - cez * bd + dez * bc;
+        double cda = cez * da + dez * ac + aez * cd;
+        double dab = dez * ab + aez * bd + bez * da;
+        double alift = aex * aex + aey * aey + aez * aez, blift = bex * bex + bey * bey + bez * bez;
+        double clift = cex * cex + cey * cey + cez * cez, dlift = dex * dex + dey * dey + dez * dez;
+        double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
+        double aez_ = std::fabs(aez), bez_ = std::fabs(bez), cez_ = std::fabs(cez), dez_ = std::fabs(dez);
+        double aexbey_ = std::fabs(aexbey), bexaey_ = std::fabs(bexaey), bexcey_ = std::fabs(bexcey);
+        double cexbey_ = std::fabs(cexbey), cexdey_ = std::fabs(cexdey), dexcey_ = std::fabs(dexcey);
+        double dexaey_ = std::fabs(dexaey), aexdey_ = std::fabs(aexdey), aexcey_ = std::fabs(aexcey);
+        double cexaey_ = std::fabs(cexaey), bexdey_ = std::fabs(bexdey), dexbey_ = std::fabs(dexbey);
+        double perm = ((cexdey_ + dexcey_) * bez_ + (dexbey_ + bexdey_) * cez_ + (bexcey_ + cexbey_) * dez_) * alift +
+                      ((dexaey_ + aexdey_) * cez_ + (aexcey_ + cexaey_) * dez_ + (cexdey_ + dexcey_) * aez_) * blift +
+                      ((aexbey_ + bexaey_) * dez_ + (bexdey_ + dexbey_) * aez_ + (dexaey_ + aexdey_) * bez_) * clift +
+                      ((bexcey_ + cexbey_) * aez_ + (cexaey_ + aexcey_) * bez_ + (aexbey_ + bexaey_) * cez_) * dlift;
+        double bound = ISP_BOUND * perm + 1e-290;  // + 1e-290: covers any gradual underflow
+        if (det > bound) return 1;
+        if (-det > bound) return -1;
+        if (perm == 0) return 0;
+    }
+    return insphere_exact(a, b, c, d, e);
 }
 
 }  // namespace exact
