@@ -30,7 +30,7 @@ import contents_race as cr  # noqa: E402
 
 pytestmark = pytest.mark.xdist_group("saves")
 
-#: 100 saves (200 until 2026-12-06: half the time, about 20 s of CI). The stock server loses about a quarter
+#: 100 saves (200 until 2026-12-06: the save loop is half as long). The stock server loses about a quarter
 #: of its saves in this race (47 of 200 in deploy/jupyterhub/README.md; 100 saves under
 #: ``COURSE_SERVER_CONFIG=stock`` still lose saves, tear disk reads and break Submits), so 100 keep the
 #: race this configuration fixes far beyond chance.
