@@ -1,7 +1,7 @@
 """No save is lost, whoever reads the notebook during a save: the single-user servers' configuration, deploy/jupyterhub/jupyter_server_config.py.
 
 A plain ``jupyter server --config=deploy/jupyterhub/jupyter_server_config.py`` (no hub needed) serves a
-notebook that one thread saves 200 times over the contents API while two threads read it over the
+notebook that one thread saves 100 times over the contents API while two threads read it over the
 API, one reads it from the disk (as the kernel's ``%check_samples`` does) and nbgrader's Submit
 copies its folder into an exchange, again and again (``contents_race.race``). No save may answer an
 error or leave an earlier save on the disk; every read from the disk and every submitted copy is a
@@ -30,7 +30,11 @@ import contents_race as cr  # noqa: E402
 
 pytestmark = pytest.mark.xdist_group("saves")
 
-SAVES = 200
+#: 100 saves (200 until 2026-12-06: the save loop is half as long). The stock server loses about a quarter
+#: of its saves in this race (47 of 200 in deploy/jupyterhub/README.md; 100 saves under
+#: ``COURSE_SERVER_CONFIG=stock`` still lose saves, tear disk reads and break Submits), so 100 keep the
+#: race this configuration fixes far beyond chance.
+SAVES = 100
 STOCK = os.environ.get("COURSE_SERVER_CONFIG") == "stock"
 CONFIG = None if STOCK else Path(os.environ.get("COURSE_SERVER_CONFIG") or cr.COURSE_CONFIG)
 COURSE, AID = "save-course", "hw"

@@ -21,6 +21,7 @@ import re
 import shutil
 import time
 from datetime import datetime, timedelta, timezone
+from pathlib import Path
 
 import pytest
 
@@ -28,6 +29,7 @@ from fake_class import add_roster, gradebook_scores, judge_json, make_course, st
 from grader.cli import main as grader_main
 from grader.jail import jail_kind
 from grader.course.nbgrader_autograde import late_factor, set_exam_deadline
+from grader.judging.submissions import Submission
 from grader.problems import load_problem
 
 PROBLEM = "bowyer-watson-timed"
@@ -63,7 +65,24 @@ def graded(tmp_path_factory):
     return course, twin, tmp
 
 
-def _expected(course) -> dict[str, float]:
+@pytest.fixture(scope="module")
+def judged():
+    """``judged(path)``: ``python -m grader judge PROBLEM path --json``, run once per distinct code. The
+    judge sees only the code cells (:func:`notebook_code`), so two notebooks with the same code get the
+    same verdict; judging each code once (the class's submitted and autograded copies, the forgeries'
+    verdicts) leaves what the tests compare unchanged and saves a judging of the whole problem per copy
+    (the slow student's TLE alone costs its 6 s time limit each time)."""
+    done: dict[str, dict] = {}
+
+    def judge(path: Path) -> dict:
+        code = Submission.from_path(path, follow_links=True).source
+        if code not in done:
+            done[code] = judge_json(PROBLEM, path)
+        return done[code]
+    return judge
+
+
+def _expected(course, judged) -> dict[str, float]:
     """Per student: the judge's score of the autograded notebook times the late policy."""
     out = {}
     for d in sorted((course.root / "submitted").iterdir()):
@@ -72,15 +91,15 @@ def _expected(course) -> dict[str, float]:
             out[d.name] = 0.0
             continue
         factor = late_factor(PROBLEM, 1200)[0] if d.name == "late" else 1.0  # submitted 20 min late
-        out[d.name] = judge_json(PROBLEM, nb)["score"] * factor
-        out[d.name + ":submitted"] = judge_json(PROBLEM, d / PROBLEM / f"{PROBLEM}.ipynb")["score"] * factor
+        out[d.name] = judged(nb)["score"] * factor
+        out[d.name + ":submitted"] = judged(d / PROBLEM / f"{PROBLEM}.ipynb")["score"] * factor
     return out
 
 
-def test_scores_equal_the_judge(graded):
+def test_scores_equal_the_judge(graded, judged):
     course, _, _ = graded
     got = gradebook_scores(course.root, PROBLEM)
-    expected = _expected(course)
+    expected = _expected(course, judged)
     assert set(got) == {s.name for s in students()}
     for student, g in got.items():
         assert g["score"] == pytest.approx(expected[student]), (student, g, expected[student])
@@ -97,12 +116,12 @@ def test_scores_equal_the_judge(graded):
     assert expected["edited:submitted"] == expected["edited"] == 0
 
 
-def test_forgeries_get_their_verdicts(graded):
+def test_forgeries_get_their_verdicts(graded, judged):
     course, _, _ = graded
     verdicts = {}
     for s in ("transformer", "monkeypatch", "gradebook", "traceback", "hostile"):
         nb = course.root / "autograded" / s / PROBLEM / f"{PROBLEM}.ipynb"
-        verdicts[s] = judge_json(PROBLEM, nb)["verdict"]
+        verdicts[s] = judged(nb)["verdict"]
     assert verdicts == {"transformer": "WA", "monkeypatch": "SV", "gradebook": "SV", "traceback": "RE", "hostile": "SV"}
 
 
