@@ -76,9 +76,10 @@ def test_check_finds_stale_and_missing_markers_and_rewrite_fixes(tmp_path, monke
     stale = statements.update_statements(check=True)
     assert len(stale) == 1 and "stale" in stale[0][1]
     assert statements.update_statements() and statements.update_statements(check=True) == []
-    assert "7 s of CPU time per test for Python, 7 s for C++" in statements.statement_path(p).read_text()
-    course = p.path / "course.yaml"
-    course.write_text(course.read_text() + "time_limits: {cpp: 1.5}\n")
+    assert "7 s of CPU time per test for Python, 1 s for C++" in statements.statement_path(p).read_text()
+    course = p.path / "course.yaml"  # the C++ limit is course.yaml's own, apart from problem.yaml's
+    assert "time_limits: {cpp: 1}" in course.read_text()
+    course.write_text(course.read_text().replace("time_limits: {cpp: 1}", "time_limits: {cpp: 1.5}"))
     assert statements.update_statements(check=True) and statements.update_statements()
     assert "7 s of CPU time per test for Python, 1.5 s for C++" in statements.statement_path(p).read_text()
     path = statements.statement_path(p)
