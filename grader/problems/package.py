@@ -5,7 +5,8 @@ A problem is a directory ``assignments/<id>/`` in the Kattis layout (``problem.y
 plus ``course.yaml`` with the grader's settings (entry function, forbidden modules, groups with
 points and generated cases). Hidden tests are generated with a fixed seed, their answers come
 from ``reference_impl`` (in the grader's process), and they are cached under
-``<checkout>/.cache/grader/`` keyed by a digest of the package. A group marked ``withheld`` (as in
+``<checkout>/.cache/grader/`` keyed by a digest of the package (:mod:`grader.problems.testcache`:
+who may write that cache, what it was made for, ``python -m grader warm``). A group marked ``withheld`` (as in
 the students' copy, :mod:`grader.course.public_problems`) keeps its name and points but has no tests here.
 
 Example:
@@ -19,10 +20,8 @@ from __future__ import annotations
 import hashlib
 import importlib.util
 import os
-import shutil
 import subprocess
 import sys
-import tempfile
 from collections.abc import Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass, field
@@ -31,10 +30,9 @@ from pathlib import Path
 from types import ModuleType
 from typing import Any
 
-import yaml
-
 from ..judging import checker_runtime
 from ..judging.checker_runtime import load_checker, read_answer
+from .testcache import load_yaml, tests_folder
 
 REPO = Path(__file__).resolve().parent.parent.parent
 ALWAYS_FORBIDDEN = ("reference_impl", "grader")
@@ -128,11 +126,6 @@ def check_course(course_root: str | Path, problem_id: str | None = None) -> Path
     return course
 
 
-def cache_root() -> Path:
-    """Where generated tests are cached: ``$GRADER_CACHE`` or ``<checkout>/.cache/grader``."""
-    return Path(os.environ.get("GRADER_CACHE", REPO / ".cache" / "grader"))
-
-
 @dataclass
 class Group:
     name: str
@@ -206,8 +199,8 @@ class Problem:
         for f in (meta_file, course_file):
             if not f.is_file():
                 raise ValueError(f"problem {path.name!r}: missing {f.name}")
-        meta = yaml.safe_load(meta_file.read_text()) or {}
-        course = yaml.safe_load(course_file.read_text()) or {}
+        meta = load_yaml(meta_file) or {}
+        course = load_yaml(course_file) or {}
         limits = meta.get("limits") or {}
         name = meta.get("name", path.name)
         groups = []
@@ -380,28 +373,19 @@ class Problem:
         return out
 
     def _materialise(self) -> Path:
-        """Generate hidden tests once (atomic rename into the cache) and return their directory."""
-        target = cache_root() / self.id / self.digest()
-        if target.is_dir():
-            return target
-        target.parent.mkdir(parents=True, exist_ok=True)
-        tmp = Path(tempfile.mkdtemp(dir=target.parent, prefix=".tmp-"))
-        try:
-            for g in self.present_groups:
-                (tmp / g.name).mkdir()
-                for k, case in enumerate(g.cases):
-                    args = self.generate_args(case, self.seed + 1000 * k + sum(map(ord, g.name)))
-                    stem = tmp / g.name / f"{k + 1:02d}"
-                    stem.with_suffix(".in").write_text(self.checker.write_input(args))
-                    stem.with_suffix(".ans").write_text(self.checker.write_output(self.generator.solve(*args)))
-            try:
-                os.rename(tmp, target)
-            except OSError:  # another process won the race
-                shutil.rmtree(tmp, ignore_errors=True)
-        except BaseException:
-            shutil.rmtree(tmp, ignore_errors=True)
-            raise
-        return target
+        """The folder of the generated tests: from the cache when a trusted copy made for this
+        package is there, else generated now (:mod:`grader.problems.testcache`)."""
+        return tests_folder(self.id, self.digest(), self._generate_into)
+
+    def _generate_into(self, folder: Path) -> None:
+        """Write every generated case's ``<group>/<NN>.in`` and ``.ans`` into ``folder``."""
+        for g in self.present_groups:
+            (folder / g.name).mkdir()
+            for k, case in enumerate(g.cases):
+                args = self.generate_args(case, self.seed + 1000 * k + sum(map(ord, g.name)))
+                stem = folder / g.name / f"{k + 1:02d}"
+                stem.with_suffix(".in").write_text(self.checker.write_input(args))
+                stem.with_suffix(".ans").write_text(self.checker.write_output(self.generator.solve(*args)))
 
     def generate_args(self, case: dict, seed: int) -> list[Any]:
         """The entry function's argument list for one generated case: the generator's
