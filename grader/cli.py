@@ -221,7 +221,7 @@ def _cmd_validate(a: argparse.Namespace) -> int:
 
 
 def _cmd_warm(a: argparse.Namespace) -> int:
-    from .problems.testcache import warm
+    from .problems.package import warm
 
     warm(a.problems or None, sys.stdout)
     return 0

@@ -37,7 +37,7 @@ import yaml
 
 from ..judging import checker_runtime
 from ..problems import REPO, Group, Problem, load_problem
-from ..problems.testcache import load_yaml_text
+from ..problems.cache import load_yaml_text
 
 KATTIS_DIRS = {"AC": "accepted", "WA": "wrong_answer", "TLE": "time_limit_exceeded", "RE": "run_time_error",
                "PE": "wrong_answer", "MLE": "run_time_error", "SV": "run_time_error"}

@@ -33,7 +33,7 @@ from .course_markdown import notebook_markdown
 from ..problems import Group, Problem, list_problems, load_problem, problems_root  # noqa: F401 (load_problem: the doctest)
 from ..contest.sample_check import is_sample_group
 from ..judging.submissions import CODE_STUB  # noqa: F401 - the course's nbgrader_config.py imports it from here
-from ..problems.testcache import load_yaml_text
+from ..problems.cache import load_yaml_text
 
 
 SOLUTIONS = Path(__file__).resolve().parent.parent.parent / "solutions"

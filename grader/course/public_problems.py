@@ -31,7 +31,7 @@ from pathlib import Path
 import yaml
 
 from ..problems import REPO  # noqa: F401 - the example above uses it
-from ..problems.testcache import load_yaml_text
+from ..problems.cache import load_yaml_text
 
 __all__ = ["public_course_yaml", "write_public_problem", "write_public_problems", "PROBLEM_PARTS"]
 

@@ -35,7 +35,7 @@ import nbformat
 from .course_notebooks import notebook_path
 from ..problems import REPO, list_problems, load_problem  # noqa: F401 (load_problem: the doctest)
 from .public_problems import IGNORE, print_or_fail, write_public_problem
-from ..problems.testcache import load_yaml_text
+from ..problems.cache import load_yaml_text
 
 INSTRUCTOR_ONLY = ("course/course_notebooks.py", "course/nbgrader_autograde.py",  # grader/ files (and their aliases)
                    "course/student_edition.py", "course/student_edition.md", "classroom/similarity.py",

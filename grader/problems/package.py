@@ -5,7 +5,7 @@ A problem is a directory ``assignments/<id>/`` in the Kattis layout (``problem.y
 plus ``course.yaml`` with the grader's settings (entry function, forbidden modules, groups with
 points and generated cases). Hidden tests are generated with a fixed seed, their answers come
 from ``reference_impl`` (in the grader's process), and they are cached under
-``<checkout>/.cache/grader/`` keyed by a digest of the package (:mod:`grader.problems.testcache`:
+``<checkout>/.cache/grader/`` keyed by a digest of the package (:mod:`grader.problems.cache`:
 who may write that cache, what it was made for, ``python -m grader warm``). A group marked ``withheld`` (as in
 the students' copy, :mod:`grader.course.public_problems`) keeps its name and points but has no tests here.
 
@@ -22,17 +22,19 @@ import importlib.util
 import os
 import subprocess
 import sys
+import time
 from collections.abc import Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass, field
 from functools import cached_property
 from pathlib import Path
 from types import ModuleType
-from typing import Any
+from typing import IO, Any
 
 from ..judging import checker_runtime
 from ..judging.checker_runtime import load_checker, read_answer
-from .testcache import load_yaml, tests_folder
+from . import cache
+from .cache import load_yaml, tests_folder
 
 REPO = Path(__file__).resolve().parent.parent.parent
 ALWAYS_FORBIDDEN = ("reference_impl", "grader")
@@ -357,7 +359,7 @@ class Problem:
 
     def _load_tests(self) -> list[TestCase]:
         out: list[TestCase] = []
-        cache = None
+        folder = None
         for g in self.present_groups:
             if g.data:
                 for f in sorted((self.path / g.data).glob("*.in")):
@@ -365,16 +367,16 @@ class Problem:
                     out.append(TestCase(f"{g.name}/{f.stem}", g.name, f.read_text(),
                                         ans.read_text() if ans.exists() else ""))
             if g.cases:
-                cache = cache or self._materialise()
+                folder = folder or self._materialise()
                 for k in range(len(g.cases)):
-                    stem = cache / g.name / f"{k + 1:02d}"
+                    stem = folder / g.name / f"{k + 1:02d}"
                     out.append(TestCase(f"{g.name}/{k + 1:02d}", g.name, stem.with_suffix(".in").read_text(),
                                         stem.with_suffix(".ans").read_text()))
         return out
 
     def _materialise(self) -> Path:
         """The folder of the generated tests: from the cache when a trusted copy made for this
-        package is there, else generated now (:mod:`grader.problems.testcache`)."""
+        package is there, else generated now (:mod:`grader.problems.cache`)."""
         return tests_folder(self.id, self.digest(), self._generate_into)
 
     def _generate_into(self, folder: Path) -> None:
@@ -412,3 +414,30 @@ def load_problem(problem_id: str, root: str | Path | None = None) -> Problem:
         known = ", ".join(p.id for p in list_problems(root)) or "none"
         raise ValueError(f"unknown problem {problem_id!r}; known problems: {known}")
     return Problem.load(path)
+
+
+def warm(problem_ids: list[str] | None = None, out: IO[str] | None = None) -> dict[str, Path | None]:
+    """Generate every problem's tests (or ``problem_ids``') into the cache; one line per problem on
+    ``out``. Returns each problem's tests folder (None: it generates nothing)."""
+    problems = [load_problem(p) for p in problem_ids] if problem_ids else list_problems()
+    done: dict[str, Path | None] = {}
+    for k, p in enumerate(problems, 1):
+        if out is not None:
+            print(f"[{k}/{len(problems)}] {p.id}: ", end="", file=out, flush=True)
+        if not any(g.cases for g in p.present_groups):
+            done[p.id] = None
+            if out is not None:
+                print("no generated tests", file=out, flush=True)
+            continue
+        t0, c0 = time.monotonic(), time.process_time()
+        digest = p.digest()
+        manifest = cache.manifest_for(p.id, digest)
+        cached = [r / p.id / digest for r in (cache.cache_root(), cache.private_root())]
+        fresh = not any(f.is_dir() and cache.valid_reason(f, manifest) is None for f in cached)
+        tests = p.tests()
+        done[p.id] = p._materialise()  # the folder tests() read (found again: nothing is generated twice)
+        if out is not None:
+            how = (f"generated in {time.monotonic() - t0:.1f} s ({time.process_time() - c0:.1f} CPU-s)" if fresh
+                   else "cached")
+            print(f"{len(tests)} tests, {how}: {done[p.id]}", file=out, flush=True)
+    return done

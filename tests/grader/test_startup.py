@@ -21,7 +21,7 @@ from pathlib import Path
 import pytest
 import yaml
 
-from grader.problems import list_problems, testcache
+from grader.problems import cache as testcache, list_problems
 
 REPO = Path(__file__).resolve().parents[2]
 

@@ -22,7 +22,7 @@ The same trusted cache keeps each parsed ``course.yaml``/``problem.yaml`` as JSO
 installed (the same data as ``yaml.safe_load``: tested on every problem), else the pure-Python one.
 
 Run (fills the cache for every problem, or the ones named; ``make warm`` does it):
-    python -m grader warm [PROBLEM...]
+    python -m grader warm [PROBLEM...]     (grader.problems.package.warm)
 
 Example:
     >>> unsafe_reason(Path("/tmp"))
@@ -42,7 +42,7 @@ import stat
 import sys
 import tempfile
 from pathlib import Path
-from typing import IO, Any, Callable
+from typing import Any, Callable
 
 REPO = Path(__file__).resolve().parent.parent.parent
 CACHE_FORMAT = 1
@@ -151,7 +151,7 @@ def manifest_for(problem_id: str, digest: str) -> dict[str, Any]:
     return {"format": CACHE_FORMAT, "problem": problem_id, "digest": digest, "answer_key": answer_key_digest()}
 
 
-def _valid(folder: Path, manifest: dict[str, Any]) -> str | None:
+def valid_reason(folder: Path, manifest: dict[str, Any]) -> str | None:
     """None when ``folder`` holds trusted tests made for ``manifest``, else why not."""
     reason = tree_reason(folder)
     if reason:
@@ -184,7 +184,7 @@ def tests_folder(problem_id: str, digest: str, generate: Callable[[Path], None])
             continue
         target = root / problem_id / digest
         if target.is_dir() or target.is_symlink():
-            why = _valid(target, manifest)
+            why = valid_reason(target, manifest)
             if why is None:
                 return target
             if "made by an older grader" not in why and "made for another" not in why:
@@ -284,33 +284,3 @@ def _remember(folder: Path, key: str, data: Any) -> None:
     except (TypeError, ValueError, OSError):  # not JSON data (dates, ...), or a read-only cache
         pass
 
-
-# -- python -m grader warm --------------------------------------------------------------------------
-def warm(problem_ids: list[str] | None = None, out: IO[str] | None = None) -> dict[str, Path | None]:
-    """Generate every problem's tests (or ``problem_ids``') into the cache; one line per problem on
-    ``out``. Returns each problem's tests folder (None: it generates nothing)."""
-    import time
-
-    from .package import list_problems, load_problem  # noqa: PLC0415 - package imports this module
-
-    problems = [load_problem(p) for p in problem_ids] if problem_ids else list_problems()
-    done: dict[str, Path | None] = {}
-    for k, p in enumerate(problems, 1):
-        if out is not None:
-            print(f"[{k}/{len(problems)}] {p.id}: ", end="", file=out, flush=True)
-        if not any(g.cases for g in p.present_groups):
-            done[p.id] = None
-            if out is not None:
-                print("no generated tests", file=out, flush=True)
-            continue
-        t0, c0 = time.monotonic(), time.process_time()
-        manifest = manifest_for(p.id, p.digest())
-        cached = [r / p.id / p.digest() for r in (cache_root(), private_root())]
-        fresh = not any(f.is_dir() and _valid(f, manifest) is None for f in cached)
-        tests = p.tests()
-        done[p.id] = p._materialise()  # noqa: SLF001 - the folder tests() just used
-        if out is not None:
-            how = (f"generated in {time.monotonic() - t0:.1f} s ({time.process_time() - c0:.1f} CPU-s)" if fresh
-                   else "cached")
-            print(f"{len(tests)} tests, {how}: {done[p.id]}", file=out, flush=True)
-    return done

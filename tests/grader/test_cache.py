@@ -1,6 +1,6 @@
 """The test cache trusts only what no other account can write, and only what was made for this package.
 
-    .venv/bin/python -m pytest tests/grader/test_testcache.py -q
+    .venv/bin/python -m pytest tests/grader/test_cache.py -q
 
 On the fixture problem ``tiny-delaunay`` (a sample and two generated tests), with ``$GRADER_CACHE`` and
 ``$HOME`` in a temporary folder: a cache that is filled once is reused; a cache folder writable by
@@ -26,7 +26,7 @@ from pathlib import Path
 import pytest
 
 from grader.cli import main as grader_main
-from grader.problems import Problem, testcache
+from grader.problems import Problem, cache as testcache
 
 from . import ordinary_user
 
@@ -158,7 +158,7 @@ def test_as_an_ordinary_account(cache):
     read but not write: it uses neither for writing, and judges from its own ``~/.cache/grader``."""
     good = _tests()
     user = ordinary_user.ensure_user()
-    scratch = Path(tempfile.mkdtemp(prefix="grader-testcache-"))
+    scratch = Path(tempfile.mkdtemp(prefix="grader-cache-test-"))
     try:
         scratch.chmod(0o755)
         home = scratch / "home"
