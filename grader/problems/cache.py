@@ -183,7 +183,7 @@ def tests_folder(problem_id: str, digest: str, generate: Callable[[Path], None])
             tried.append(f"{root} (not trusted or not writable)")
             continue
         target = root / problem_id / digest
-        if target.is_dir() or target.is_symlink():
+        if os.path.lexists(target):
             why = valid_reason(target, manifest)
             if why is None:
                 return target
@@ -212,7 +212,10 @@ def _fill(root: Path, target: Path, manifest: dict[str, Any], generate: Callable
                 os.chmod(os.path.join(dirpath, d), 0o700)
             for f in filenames:
                 os.chmod(os.path.join(dirpath, f), 0o644)
-        if target.is_dir() or target.is_symlink():  # refused: set aside, then removed
+        if os.path.lexists(target):  # refused: set aside, then removed, unless another process
+            if valid_reason(target, manifest) is None:  # has just put a good one there (in use: kept)
+                shutil.rmtree(tmp, ignore_errors=True)
+                return target
             aside = Path(tempfile.mkdtemp(dir=target.parent, prefix=".stale-"))
             try:
                 os.rename(target, aside / "tests")

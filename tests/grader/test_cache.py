@@ -80,7 +80,8 @@ def test_a_group_writable_cache_is_refused_and_the_private_one_used(cache, tmp_p
 
 
 @pytest.mark.parametrize("tamper", ["answer made world-writable", "folder made group-writable",
-                                    "answer owned by another account", "folder replaced by a link"])
+                                    "answer owned by another account", "folder replaced by a link",
+                                    "folder replaced by a file"])
 def test_a_tampered_tests_folder_is_refused_and_made_again(tamper, cache, tmp_path, capsys):
     if "another account" in tamper and os.geteuid() != 0:
         pytest.skip("needs root to give a file to another account")
@@ -96,6 +97,9 @@ def test_a_tampered_tests_folder_is_refused_and_made_again(tamper, cache, tmp_pa
     elif tamper == "answer owned by another account":
         answer.write_text("[]\n")
         os.chown(answer, NOBODY, NOBODY)
+    elif tamper == "folder replaced by a file":
+        shutil.rmtree(folder)
+        folder.write_text("not a folder\n")
     else:
         forged = tmp_path / "forged"
         shutil.copytree(folder, forged)
@@ -103,8 +107,9 @@ def test_a_tampered_tests_folder_is_refused_and_made_again(tamper, cache, tmp_pa
         shutil.rmtree(folder)
         folder.symlink_to(forged)
     assert _tests() == good
-    assert "refused the cached tests" in capsys.readouterr().err
-    assert testcache.tree_reason(folder) is None and not folder.is_symlink()
+    if "file" not in tamper:  # a file is no tests folder at all (read as one made by an older grader)
+        assert "refused the cached tests" in capsys.readouterr().err
+    assert testcache.tree_reason(folder) is None and folder.is_dir() and not folder.is_symlink()
 
 
 @pytest.mark.parametrize("change", ["another answer key", "another format", "no manifest (an older grader)"])
