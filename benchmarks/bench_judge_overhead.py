@@ -58,8 +58,8 @@ Run (as root or as an ordinary user; the worktree's code via PYTHONPATH):
 ``--startup-only`` prints only the start-up table, with two more rows: ``python -m grader judge``
 of a submission with a syntax error (``CE`` before any test runs: the command's whole start-up,
 problem and tests loaded, no jail) and the notebooks' sample check as its first call in a fresh
-process (``judge_samples`` + ``picture_png`` of the delaunay accepted solution; its target is wall
-time: under 1 s on a quiet machine).
+process (``judge_samples`` alone: what the verdict table waits for; then with ``picture_png``, of
+the delaunay accepted solution; its target is wall time: under 1 s on a quiet machine).
 
 Example (an excerpt of the full run; all of it is in benchmarks/README.md):
     cpu method: cgroup-v1 cpuacct (a fresh group around each command; the jail's groups below it)
@@ -656,6 +656,9 @@ def main(argv: list[str] | None = None) -> dict[str, Any]:
         syntax_error.write_text("def delaunay(points):\n    return [\n")
         startup["python -m grader judge delaunay (a syntax error: CE before any test runs)"] = best(
             meter, [py, "-m", "grader", "judge", "delaunay", str(syntax_error)], a.repeat, expect_rc=1)
+        startup["sample check: judge_samples alone (the verdict table), fresh python"] = best(
+            meter, [py, "-c", SAMPLE_CHECK.split("; assert picture_png")[0],
+                    str(accepted_solution("delaunay", LANGUAGES["python"]))], a.repeat)
         startup["sample check: judge_samples + picture, delaunay accepted (fresh python)"] = best(
             meter, [py, "-c", SAMPLE_CHECK, str(accepted_solution("delaunay", LANGUAGES["python"]))], a.repeat)
         yaml_cpu = course_yaml_cost(problems, a.repeat)
