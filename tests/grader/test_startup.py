@@ -14,6 +14,7 @@ Example:
 from __future__ import annotations
 
 import json
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -39,8 +40,9 @@ REPORT = ("import json, sys\n"
 def _loaded(code: str, extra_heavy: tuple[str, ...] = ()) -> list[str]:
     """Run ``code`` in a fresh interpreter, then list the heavy modules it left in ``sys.modules``."""
     script = code + "\n" + REPORT.format(heavy=HEAVY + extra_heavy)
-    r = subprocess.run([sys.executable, "-c", script], cwd=REPO, capture_output=True, text=True, timeout=120,
-                       env={"PATH": "/usr/bin:/bin", "PYTHONPATH": str(REPO), "HOME": str(Path.home())})
+    env = {"PATH": "/usr/bin:/bin", "PYTHONPATH": str(REPO), "HOME": str(Path.home())}
+    env.update({k: os.environ[k] for k in ("GRADER_CACHE", "GRADER_PROBLEMS", "NUMBA_CACHE_DIR") if k in os.environ})
+    r = subprocess.run([sys.executable, "-c", script], cwd=REPO, capture_output=True, text=True, timeout=120, env=env)
     assert r.returncode == 0, r.stderr[-2000:]
     return json.loads(r.stdout.strip().splitlines()[-1])
 
