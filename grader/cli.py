@@ -4,6 +4,11 @@
     python -m grader judge PROBLEM FILE [--json] [--report out.html]
     python -m grader grade PROBLEM SUBMISSIONS_DIR [--db results.sqlite] [--jobs N] [--csv grades.csv]
                            [--reports DIR] [--scheduler tcp://host:8786] [--similarity]
+    python -m grader regrade PROBLEM SUBMISSIONS_DIR [--db results.sqlite] [--student S]... [--all] [--diff diff.csv]
+    python -m grader export-grades --roster roster.csv --assignments lms-map.csv [--gradebook gradebook.db]
+                                   [--db results.sqlite]... --out grades/
+    python -m grader deadlines publish FOLDER [--course DIR]     (root: each student's own deadlines file)
+    python -m grader deadlines show [--folder DIR]               (a student: their own deadlines)
     python -m grader similarity PROBLEM SUBMISSIONS_DIR [--reports DIR] [--reference DIR]... [--threshold 0.5]
     python -m grader timed start PROBLEM STUDENT [--db timed.sqlite]
     python -m grader timed status PROBLEM STUDENT [--db timed.sqlite]
@@ -32,10 +37,10 @@ import json
 import os
 import sys
 from pathlib import Path
-
 from typing import TYPE_CHECKING
 
 from .problems import list_problems, load_problem
+from .judging.languages import CPP, LANGUAGES, PYTHON, Language
 
 if TYPE_CHECKING:
     from .classroom.store import ResultStore
@@ -54,15 +59,30 @@ def _existing_store(path: str) -> ResultStore:
     return ResultStore(path)
 
 
+def compiled_languages() -> list[Language]:
+    """The compiled languages whose limits ``list`` shows: those the judge accepts and C++ (whose
+    limits the statements already give), each once, in :data:`LANGUAGES` order."""
+    return [lang for lang in dict.fromkeys((*LANGUAGES, CPP)) if lang.compile]
+
+
 def _cmd_list(a: argparse.Namespace) -> int:
-    rows = [(p.id, p.entry, f"{p.time_limit:g}s", f"{p.memory_mb}MB", str(p.points), p.title)
-            for p in list_problems()]
+    """One row per problem: the first columns (id, entry, Python's time, memory, points) are as they
+    always were for scripts; then the time limit of each compiled language, then the title. The
+    compile commands follow the table once, on stderr, so that stdout stays the table."""
+    langs = compiled_languages()
+    rows = [(p.id, p.entry, f"{p.time_limit:g}s", f"{p.memory_mb}MB", str(p.points),
+             *(f"{p.time_limit_for(lang.name):g}s" for lang in langs), p.title) for p in list_problems()]
     if a.json:
-        keys = ("id", "entry", "time_limit", "memory", "points", "title")
+        keys = ("id", "entry", "time_limit", "memory", "points", *(f"time_limit_{lang.name}" for lang in langs), "title")
         print(json.dumps([dict(zip(keys, r)) for r in rows], indent=1))
         return 0
-    for r in [("id", "entry", "time", "memory", "points", "title"), *rows]:
-        print(f"{r[0]:22} {r[1]:22} {r[2]:6} {r[3]:7} {r[4]:6} {r[5]}")
+    for r in [("id", "entry", "time", "memory", "points", *(lang.name for lang in langs), "title"), *rows]:
+        print(f"{r[0]:22} {r[1]:22} {r[2]:6} {r[3]:7} {r[4]:6} " + "".join(f"{c:5} " for c in r[5:-1]) + r[-1])
+    print(f"time: the CPU-time limit per test for Python ({', '.join(PYTHON.all_suffixes)})", file=sys.stderr)
+    for lang in langs:
+        command = " ".join(lang.compile_command("main" + lang.suffixes[0], "main"))
+        print(f"{lang.name}: the limit for {', '.join(lang.suffixes)} files, compiled as `{command}`, "
+              f"run in {'/'.join(lang.modes)} mode", file=sys.stderr)
     return 0
 
 
@@ -108,7 +128,7 @@ def _cmd_grade(a: argparse.Namespace) -> int:
         summaries = grade_course(a.problem, a.submissions, jobs=a.jobs, progress=None if a.quiet else sys.stderr)
     else:
         summaries = grade_class(a.problem, a.submissions, a.db, jobs=a.jobs, scheduler=a.scheduler, csv_path=a.csv,
-                            report_dir=a.reports, progress=not a.quiet)
+                                report_dir=a.reports, progress=not a.quiet, diff_path=a.diff)
     if a.similarity:
         _similarity(a.problem, a.submissions, a.reports or SIMILARITY_DIR, a.reference, a.boilerplate, a.threshold,
                     sys.stderr)
@@ -118,6 +138,53 @@ def _cmd_grade(a: argparse.Namespace) -> int:
         for s in sorted(summaries, key=lambda s: s["student"]):
             print(f"{s['student']:20} {s.get('verdict', ''):4} {s.get('score', '')}/{s.get('max_score', '')} "
                   f"{s.get('skipped', '')}{gradebook_note(s)}")
+    return 0
+
+
+def _cmd_regrade(a: argparse.Namespace) -> int:
+    from .classroom.classgrade import grade_class
+
+    summaries = grade_class(a.problem, a.submissions, a.db, jobs=a.jobs, csv_path=a.csv, progress=not a.quiet,
+                            regrade_students=a.student or ([] if a.all else None), diff_path=a.diff)
+    moved = [s for s in summaries if "regrade" in s]
+    for s in sorted(moved, key=lambda s: s["student"]):
+        from .classroom.regrade import diff_line
+
+        print(diff_line(s["regrade"]))
+    print(f"{a.problem}: {len(moved)} regraded, "
+          f"{sum(s['regrade']['old_score'] != s['regrade']['new_score'] for s in moved)} scores moved"
+          + (f"; diff in {a.diff}" if a.diff else ""))
+    return 0
+
+
+def _cmd_export_grades(a: argparse.Namespace) -> int:
+    from .course.grades_export import export, missing_lines
+
+    report = export(a.roster, a.assignments, a.out, gradebook=a.gradebook, stores=a.db or [])
+    for line in missing_lines(report):
+        print(line, file=sys.stderr)
+    for f in report["files"]:
+        print(f)
+    return 0
+
+
+def _cmd_deadlines(a: argparse.Namespace) -> int:
+    from .course import deadlines
+    from .problems import course_folder
+
+    if a.action == "publish":
+        if not a.folder:
+            raise ValueError("deadlines publish needs the FOLDER to write into")
+        course = Path(a.course) if a.course else course_folder()
+        if course is None:
+            raise ValueError("no course here: pass --course DIR (the folder with nbgrader_config.py)")
+        written, skipped = deadlines.publish(course, a.folder)
+        print(f"{len(written)} students' deadlines written to {a.folder}")
+        for s in skipped:
+            print(f"{s}: no account here, not written", file=sys.stderr)
+        return 0
+    for text in deadlines.show(a.folder):
+        print(text)
     return 0
 
 
@@ -245,9 +312,12 @@ def build_parser() -> argparse.ArgumentParser:
     p = sub.add_parser("list", help="list problems")
     p.add_argument("--json", action="store_true")
     p.set_defaults(func=_cmd_list)
-    p = sub.add_parser("judge", help="judge one submission")
+    p = sub.add_parser("judge", help="judge one submission",
+                       description="Judge one submission: a .py file, an .ipynb notebook, or a C++ file (.cpp, .cc, "
+                                   ".cxx: compiled once with g++ -std=gnu++17 -O2 -static in the compile jail, a "
+                                   "compile error is CE, then run per test in the jail, reading standard input).")
     p.add_argument("problem")
-    p.add_argument("file")
+    p.add_argument("file", help="the submission (.py, .ipynb, .cpp, .cc or .cxx)")
     p.add_argument("--json", action="store_true", help="one JSON object instead of the table")
     p.add_argument("--report", help="also write an HTML report here")
     p.add_argument("--trusted", action="store_true",
@@ -268,8 +338,41 @@ def build_parser() -> argparse.ArgumentParser:
                    help="SUBMISSIONS is an nbgrader course's submitted/ dir: judge in parallel, then nbgrader autograde")
     p.add_argument("--similarity", action="store_true",
                    help=f"then write the class's similarity report (into --reports, else {SIMILARITY_DIR}/)")
+    p.add_argument("--diff", help="write the diff of the students judged again (CSV) here")
     _similarity_options(p)
     p.set_defaults(func=_cmd_grade)
+    p = sub.add_parser("regrade", help="judge students again on demand and show whose score moved and why",
+                       description="Judge again the groups whose tests, checker or limits changed since "
+                                   "SUBMISSIONS/<student>/<file> was graded (nothing else), and each --student (or "
+                                   "with --all everyone) from scratch; print and save each student's diff (old "
+                                   "score, new score, which groups changed and why). An interrupted regrade "
+                                   "resumes when run again.")
+    p.add_argument("problem")
+    p.add_argument("submissions")
+    p.add_argument("--db", default="results.sqlite")
+    p.add_argument("--student", action="append", help="judge this student again from scratch (repeatable)")
+    p.add_argument("--all", action="store_true", help="judge every student again from scratch")
+    p.add_argument("--diff", help="also write the diff as CSV here")
+    p.add_argument("--csv", help="the grades CSV, as `grade --csv`")
+    p.add_argument("--jobs", type=int, default=1)
+    p.add_argument("--quiet", action="store_true", help="no progress bar")
+    p.set_defaults(func=_cmd_regrade)
+    p = sub.add_parser("export-grades", help="the course's grades as Canvas and Moodle gradebook imports",
+                       description="Write OUT/canvas.csv, OUT/moodle.csv (their gradebook import formats), "
+                                   "OUT/grades-long.csv and OUT/missing.txt from nbgrader's gradebook and the "
+                                   "judge's results stores, after late penalties and extensions.")
+    p.add_argument("--roster", required=True, help="CSV: course_id, lms_id, name, email [, sis_user_id, "
+                                                   "sis_login_id, section]")
+    p.add_argument("--assignments", required=True, help="CSV: assignment, canvas, moodle [, points]")
+    p.add_argument("--gradebook", help="nbgrader's gradebook.db")
+    p.add_argument("--db", action="append", help="a results store (repeatable)")
+    p.add_argument("--out", required=True, help="the folder to write into")
+    p.set_defaults(func=_cmd_export_grades)
+    p = sub.add_parser("deadlines", help="each student's own deadlines: publish (root) / show (a student)")
+    p.add_argument("action", choices=["publish", "show"])
+    p.add_argument("folder", nargs="?", help="where the files are (default for show: next to the problems)")
+    p.add_argument("--course", help="publish: the course folder (default: the one you are in)")
+    p.set_defaults(func=_cmd_deadlines)
     p = sub.add_parser("similarity", help="similarity report of a class: who shares code with whom and the tutorial",
                        description="Compare every pair of SUBMISSIONS/<student>/<file> (or nbgrader's collected "
                                    "submitted/<student>/PROBLEM/PROBLEM.ipynb: the solution cells) and every "

@@ -5,6 +5,8 @@
 ``store``                 the SQLite results store
 ``scoreboard``            the contest scoreboard from a store
 ``timed``                 timed attempts (start, status, submit)
+``regrade``               per-group store keys, carried-over results, regrade diffs
+``extensions``            per-student extensions (``extensions.yaml`` of the course)
 ``similarity``            who shares code: fingerprints of every pair and of references
 ``similarity_report``     the similarity pages and ``run()``
 ``code_from_data``        code carried as data, decoded statically (never run)

@@ -12,9 +12,12 @@ counts the tests done, including results resumed from the store after an interru
 ``--reports DIR`` writes each student's report to ``DIR/students/`` (file names from
 :func:`grader.contest.report.report_name`: no collision, no path, no URL scheme) before marking the student
 done, rebuilds a missing one on resume, and writes ``DIR/index.html`` linking them all.
-Submission times are the grader's (when it first saw a file's content), never file mtimes; the
-store key includes the problem's digest, so changed tests or points judge everyone again (said on
-stderr and in the CSV note).
+Submission times are the grader's (when it first saw a file's content), never file mtimes. The
+store key is the content's hash and the problem's version (:mod:`grader.classroom.regrade`: a hash
+of each group's tests, the checker, the limits and the points): a statement edit judges nobody
+again; a changed group is judged again for everyone, the other groups' results are carried over,
+and each student's diff (old score, new score, which groups changed and why) is printed, kept in
+the store and noted in the CSV.
 
 Example:
     python -m grader grade delaunay class/ --db results.sqlite --jobs 2 --csv grades.csv
@@ -25,6 +28,7 @@ from __future__ import annotations
 import csv
 import ctypes
 import hashlib
+import json
 import os
 import signal
 import sys
@@ -48,9 +52,10 @@ from ..judging.verdicts import JudgeResult, TestResult
 class Job:
     student: str
     path: str
-    sha: str  #: the store key: the content's hash, and the problem's digest when graded as a class
+    sha: str  #: the store key: the content's hash, and the problem's version when graded as a class
     submitted_at: float  #: when the grader first saw this content (never the file's mtime)
     note: str = ""  #: why this file was chosen, when the folder held several
+    groups: str = ""  #: the per-group fingerprints it is judged under (JSON; :mod:`grader.classroom.regrade`)
 
 
 NO_SUBMISSION = "no submission (no .py or .ipynb file in the folder)"
@@ -133,8 +138,8 @@ def content_sha(path: Path) -> str:
 def discover(root: str | Path, problem: str, store: ResultStore | None = None, digest: str = "") -> list[Job]:
     """One job per student directory under ``root`` that holds a submission. With a ``store``,
     submission times are when the grader first saw each file's content (recorded now if never);
-    the store key is the content's hash and the problem's ``digest`` (changed tests or points:
-    a new key, so the student is judged again)."""
+    the store key is the content's hash and ``digest``, the problem's version
+    (:func:`grader.classroom.regrade.version`: changed tests, checker, limits or points make a new key)."""
     jobs = []
     ids, _ = student_ids(_student_dirs(root))
     for d, student in ids.items():
@@ -184,9 +189,9 @@ def grade_local(problem: str, job: Job, db_path: str, hide: tuple[str, ...], rep
     """Worker side: judge one student's file, committing each test result to the store."""
     store = ResultStore(db_path)
     try:
-        store.begin(job.student, problem, job.path, job.sha, job.submitted_at)
-        prior = store.prior(job.student, problem, job.sha)
         judge = _judge_for(problem, hide)
+        store.begin(job.student, problem, job.path, job.sha, job.submitted_at, job.groups)
+        prior = store.prior(job.student, problem, job.sha)
         result = judge.judge_path(job.path, on_test=lambda r: store.add_test(job.student, problem, job.sha, r),
                                   prior=prior)
         if report_dir:  # before the student is marked done: a kill in between leaves them to resume
@@ -267,23 +272,52 @@ class Progress:
 
 def grade_class(problem: str, root: str | Path, db_path: str | Path, jobs: int = 1, scheduler: str | None = None,
                 csv_path: str | Path | None = None, report_dir: str | Path | None = None,
-                progress: bool = True) -> list[dict]:
-    """Grade every student's submission for ``problem``; returns one summary dict per student."""
+                progress: bool = True, regrade_students: list[str] | None = None,
+                diff_path: str | Path | None = None) -> list[dict]:
+    """Grade every student's submission for ``problem``; returns one summary dict per student.
+
+    Only what changed is judged: new submissions, and the groups whose tests, checker or limits
+    changed since a submission was judged (:mod:`grader.classroom.regrade`). ``regrade_students``
+    (``[]``: everyone) are judged again from scratch on demand. Every student judged again gets a
+    diff (old score, new score, the groups that changed and why): printed on stderr, kept in the
+    store and written to ``diff_path`` (CSV) when given; each summary of such a student has it
+    under ``"regrade"``."""
+    from . import regrade
+
     spec = load_problem(problem)  # also: a clear error for an unknown id
     max_score = sum(spec.group_points.values())
     _student_dirs(root)  # a missing folder is refused before a store is created
+    fps = regrade.fingerprints(spec)
     store = ResultStore(db_path)
-    todo_all = discover(root, problem, store, spec.digest())
+    todo_all = discover(root, problem, store, regrade.version(fps))
     empty = empty_students(root, problem)
     for warning in student_ids(_student_dirs(root))[1]:
         print(warning, file=sys.stderr)
+    if regrade_students is not None:
+        known = {j.student for j in todo_all}
+        unknown = sorted(set(regrade_students) - known)
+        if unknown:
+            raise ValueError(f"no submission of {', '.join(unknown)} for {problem} under {root} "
+                             f"(students with one: {', '.join(sorted(known)) or 'none'})")
+        for j in todo_all:
+            if not regrade_students or j.student in regrade_students:
+                regrade.force(store, problem, j.student, j.sha, "regraded on demand")
     todo = [j for j in todo_all if not store.is_done(j.student, problem, j.sha)]
-    rejudged = [j for j in todo if store.judged_under_other_tests(j.student, problem, j.sha.split("-")[0], j.sha)]
-    for j in rejudged:
-        j.note = "; ".join(filter(None, [j.note, "judged again: the problem's tests or points changed"]))
+    rejudged = 0
+    for j in todo:
+        j.groups = json.dumps(fps, sort_keys=True)
+        if regrade.forced(store, problem, j.student, j.sha):
+            j.note = "; ".join(filter(None, [j.note, "judged again on demand"]))
+            continue
+        prev, changed = regrade.carry_over(store, j.student, spec, j.sha.split("-")[0], j.sha, fps)
+        if prev is not None:
+            regrade.start(store, problem, j.student, prev, j.sha, changed)
+            rejudged += 1
+            groups = ", ".join(f"{g} ({w})" for g, w in sorted(changed.items()) if w) or "no group changed"
+            j.note = "; ".join(filter(None, [j.note, f"judged again: {groups}"]))
     if rejudged:
-        print(f"{problem}: {len(rejudged)} submissions judged again: the problem's tests or points changed since "
-              "they were graded", file=sys.stderr)
+        print(f"{problem}: {rejudged} submissions judged again: the problem's tests, checker, limits or points "
+              "changed since they were graded (unchanged groups are carried over)", file=sys.stderr)
     latest = store.latest(problem)
     summaries = [_graded_summary(j.student, latest.get(j.student), max_score) for j in todo_all if j not in todo]
     summaries += [{"student": st, "verdict": "", "score": 0, "max_score": max_score, "skipped": NO_SUBMISSION}
@@ -335,6 +369,18 @@ def grade_class(problem: str, root: str | Path, db_path: str | Path, jobs: int =
                         bar.step(f"{s['student']} {s.get('verdict')} {s.get('score', '')}/{s.get('max_score', '')}")
                 if bar and not done:
                     bar.poll(store, problem, shas, finished)
+    diffs = regrade.finish(store, problem)
+    if diffs:
+        print(f"{problem}: regraded {len(diffs)} students, {sum(d['old_score'] != d['new_score'] for d in diffs)} "
+              "scores moved:", file=sys.stderr)
+        for d in diffs:
+            print("  " + regrade.diff_line(d), file=sys.stderr)
+        by_student = {d["student"]: d for d in diffs}
+        for s in summaries:
+            if s["student"] in by_student:
+                s["regrade"] = by_student[s["student"]]
+    if diff_path:
+        regrade.write_diff_csv(diffs, problem, diff_path)
     if csv_path:
         store.export_csv(problem, csv_path)
         if empty:
@@ -395,7 +441,7 @@ def _grade_dask(problem: str, todo: Iterable[Job], store: ResultStore, scheduler
     with Client(scheduler) as client:
         futures = {}
         for j in todo:
-            store.begin(j.student, problem, j.path, j.sha, j.submitted_at)
+            store.begin(j.student, problem, j.path, j.sha, j.submitted_at, j.groups)
             prior = [r.to_json() for r in store.prior(j.student, problem, j.sha).values()]
             try:
                 data = read_submission_bytes(j.path)

@@ -7,7 +7,8 @@ the student's timed start for that problem, else the first submission in the sto
 A timed problem's late policy applies: a submission rejected for lateness (multiplier 0) does
 not solve the problem, and the ``points`` column sums each problem's best score after the late
 multiplier (an AC worth 100 submitted late under ``late_multiplier: 0.5`` counts 50, marked
-``late`` in its cell).
+``late`` in its cell). That multiplier is recomputed from the deadline as it is now: a student's
+extension (:mod:`grader.classroom.extensions`) granted after the submission counts.
 
 Example:
     >>> rows = compute(ResultStore(":memory:"))
@@ -37,6 +38,20 @@ def parse_start(text: str | None) -> float | None:
             raise ValueError(f"--start must be epoch seconds or an ISO time, got {text!r}") from None
 
 
+def final_multiplier(sub: dict, timed_starts: dict[tuple[str, str], float]) -> float:
+    """A stored submission's late factor: for a timed attempt, recomputed from its deadline as it is
+    now (extensions included); otherwise the stored one."""
+    from .timed import timed_multiplier
+
+    key = (sub["student"], sub["problem"])
+    if key in timed_starts and sub.get("submitted_at") is not None:
+        try:
+            return timed_multiplier(sub["problem"], sub["student"], timed_starts[key], sub["submitted_at"])
+        except ValueError:  # the problem is gone or no longer timed: what was stored
+            pass
+    return 1.0 if sub["multiplier"] is None else float(sub["multiplier"])
+
+
 def compute(store: ResultStore, start: float | None = None, problems: list[str] | None = None) -> list[dict]:
     subs = [s for s in store.submissions() if s["status"] == "done" and (not problems or s["problem"] in problems)]
     # one try per content: a file judged again after the problem's tests changed (key content-digest)
@@ -53,7 +68,7 @@ def compute(store: ResultStore, start: float | None = None, problems: list[str] 
                                               "problems": {}})
         cell = row["problems"].setdefault(s["problem"], {"tries": 0, "solved_at_min": None, "points": 0.0,
                                                          "late": False})
-        mult = 1.0 if s["multiplier"] is None else float(s["multiplier"])
+        mult = final_multiplier(s, timed)
         final = round((s["score"] or 0) * mult, 2)
         if final > cell["points"]:
             row["points"] = round(row["points"] - cell["points"] + final, 2)
@@ -61,7 +76,7 @@ def compute(store: ResultStore, start: float | None = None, problems: list[str] 
         if cell["solved_at_min"] is not None:
             continue
         cell["tries"] += 1
-        if s["verdict"] == "AC" and (s["multiplier"] is None or s["multiplier"] > 0):
+        if s["verdict"] == "AC" and mult > 0:
             t0 = start if start is not None else timed.get((s["student"], s["problem"]), first)
             minutes = int(max(0.0, s["submitted_at"] - t0) // 60)
             cell["solved_at_min"] = minutes

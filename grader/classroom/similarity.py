@@ -53,7 +53,7 @@ import numpy as np
 from .classgrade import choose_submission, _student_dirs
 from .code_from_data import unpack
 from ..problems import load_problem, problems_root
-from ..judging.languages import SUFFIXES
+from ..judging.languages import SUFFIXES, language_of
 from ..judging.submissions import CODE_STUB, SubmissionError, notebook_code, read_submission_bytes
 from ..judging.text import clean
 
@@ -262,12 +262,13 @@ def _kgram_hashes(text: str, k: int) -> np.ndarray:
                      for g in grams], dtype=np.int64)
 
 
-def _fingerprint(name: str, code: str, win: int, boiler: np.ndarray | None = None) -> Fingerprint:
-    """Tokenise and filter ``code`` (copydetect's ``filter_code``: names -> V/F, strings -> S, no
-    comments or whitespace), hash its k-grams, winnow, drop boilerplate hashes."""
+def _fingerprint(name: str, code: str, win: int, boiler: np.ndarray | None = None, lang: str = "python") -> Fingerprint:
+    """Tokenise and filter ``code`` (copydetect's ``filter_code`` with Pygments' lexer of ``lang``:
+    names -> V/F, strings -> S, no comments or whitespace), hash its k-grams, winnow, drop
+    boilerplate hashes."""
     from copydetect.utils import filter_code, get_token_coverage, winnow
 
-    filtered, offsets = filter_code(code, name, "python")
+    filtered, offsets = filter_code(code, name, lang)
     hashes, idx = winnow(_kgram_hashes(filtered, NOISE_T), win, remove_duplicates=False)
     if boiler is not None and len(boiler) and len(hashes):
         keep = ~np.isin(hashes, boiler)
@@ -288,13 +289,14 @@ def boilerplate_hashes(codes: list[str]) -> np.ndarray:
 
 
 def language(path: str) -> str:
-    """The language of a document by its file name: ``"python"`` for ``.py``/``.ipynb`` (and no name).
+    """The language of a document by its file name (:func:`grader.judging.languages.language_of`;
+    ``"python"`` for no name or an unknown suffix).
 
-    >>> language("ada/delaunay.ipynb"), language("bo/main.cpp")
-    ('python', 'cpp')
+    >>> language("ada/delaunay.ipynb"), language("bo/main.cpp"), language("cy/main.cc")
+    ('python', 'cpp', 'cpp')
     """
-    suffix = Path(path).suffix.lower()
-    return "python" if suffix in ("", ".py", ".ipynb") else suffix.lstrip(".")
+    found = language_of(path) if path else None
+    return found.name if found is not None else "python"
 
 
 def fingerprint(doc: Document, boiler: np.ndarray | None = None) -> Document:
@@ -302,7 +304,8 @@ def fingerprint(doc: Document, boiler: np.ndarray | None = None) -> Document:
     fingerprints of both (boilerplate hashes removed)."""
     found = unpack(doc.code, language(doc.path))
     doc.decoded, doc.marks = found.code, found.marks
-    doc.fp = _fingerprint(doc.path or "submission.py", doc.compared, GUARANTEE_T - NOISE_T + 1, boiler)
+    doc.fp = _fingerprint(doc.path or "submission.py", doc.compared, GUARANTEE_T - NOISE_T + 1, boiler,
+                          language(doc.path))
     return doc
 
 
@@ -356,8 +359,9 @@ def analyse(problem: str, root: str | Path, references: list[str | Path] = (), e
     students = [fingerprint(d, boiler) for d in collect_class(problem, root)]
     refs = [fingerprint(d, boiler) for d in collect_references(list(references))]
     readable = [d for d in students if d.code]
-    pairs = [compare(a, b, threshold) for a, b in itertools.combinations(readable, 2)]
-    pairs += [compare(s, r, threshold) for s in readable for r in refs]
+    same = lambda a, b: language(a.path) == language(b.path)  # noqa: E731 - C++ is compared with C++ only
+    pairs = [compare(a, b, threshold) for a, b in itertools.combinations(readable, 2) if same(a, b)]
+    pairs += [compare(s, r, threshold) for s in readable for r in refs if same(s, r)]
     pairs.sort(key=lambda p: (-p.score, -p.tokens, p.a.name, p.b.name))
     return Analysis(problem, students, refs, pairs, threshold)
 

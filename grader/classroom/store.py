@@ -24,7 +24,7 @@ SCHEMA = """
 CREATE TABLE IF NOT EXISTS submissions (
     student TEXT, problem TEXT, sha TEXT, file TEXT, submitted_at REAL, status TEXT,
     verdict TEXT, score INTEGER, max_score INTEGER, multiplier REAL DEFAULT 1.0, note TEXT DEFAULT '',
-    PRIMARY KEY (student, problem, sha));
+    groups TEXT DEFAULT '', PRIMARY KEY (student, problem, sha));
 CREATE TABLE IF NOT EXISTS results (
     student TEXT, problem TEXT, sha TEXT, test TEXT, grp TEXT, verdict TEXT, time_s REAL,
     memory_mb REAL, message TEXT, input_preview TEXT, judged_at REAL, hidden_message TEXT DEFAULT '',
@@ -34,6 +34,9 @@ CREATE TABLE IF NOT EXISTS seen (
 CREATE TABLE IF NOT EXISTS timed (
     student TEXT, problem TEXT, started_at REAL, deadline REAL, submitted_at REAL, elapsed_s REAL,
     sha TEXT, late INTEGER, PRIMARY KEY (student, problem));
+CREATE TABLE IF NOT EXISTS regrades (
+    problem TEXT, student TEXT, old_sha TEXT, new_sha TEXT, old_score REAL, new_score REAL, old_verdict TEXT,
+    new_verdict TEXT, changes TEXT, started_at REAL, done INTEGER DEFAULT 0, PRIMARY KEY (problem, student, new_sha));
 """
 
 
@@ -54,13 +57,19 @@ class ResultStore:
         have = {r[1] for r in self.db.execute("PRAGMA table_info(results)")}
         if "hidden_message" not in have:
             self.db.execute("ALTER TABLE results ADD COLUMN hidden_message TEXT DEFAULT ''")
+        if "groups" not in {r[1] for r in self.db.execute("PRAGMA table_info(submissions)")}:
+            # stores made before per-group keys: their rows keep the whole-package digest key
+            self.db.execute("ALTER TABLE submissions ADD COLUMN groups TEXT DEFAULT ''")
 
     def close(self) -> None:
         self.db.close()
 
-    def begin(self, student: str, problem: str, file: str, sha: str, submitted_at: float) -> None:
-        self.db.execute("INSERT OR IGNORE INTO submissions (student, problem, sha, file, submitted_at, status) "
-                        "VALUES (?, ?, ?, ?, ?, 'running')", (student, problem, sha, clean(file, 1000), submitted_at))
+    def begin(self, student: str, problem: str, file: str, sha: str, submitted_at: float, groups: str = "") -> None:
+        """Record a submission about to be judged (``groups``: the JSON of the per-group keys it is
+        judged under, :func:`grader.classroom.regrade.fingerprints`)."""
+        self.db.execute("INSERT OR IGNORE INTO submissions (student, problem, sha, file, submitted_at, status, groups) "
+                        "VALUES (?, ?, ?, ?, ?, 'running', ?)",
+                        (student, problem, sha, clean(file, 1000), submitted_at, groups))
 
     def first_seen(self, student: str, problem: str, content: str, now: float | None = None) -> float:
         """When the grader first saw this content (a file's SHA-256) from this student: the time of
@@ -69,12 +78,6 @@ class ResultStore:
                         (student, problem, content, time.time() if now is None else now))
         return self.db.execute("SELECT first_seen FROM seen WHERE student=? AND problem=? AND content=?",
                                (student, problem, content)).fetchone()[0]
-
-    def judged_under_other_tests(self, student: str, problem: str, content: str, key: str) -> bool:
-        """Was this content graded under another version of the problem (key ``content-digest``)?"""
-        return self.db.execute("SELECT 1 FROM submissions WHERE student=? AND problem=? AND status='done' "
-                               "AND substr(sha, 1, ?) = ? AND sha != ?",
-                               (student, problem, len(content) + 1, content + "-", key)).fetchone() is not None
 
     def add_test(self, student: str, problem: str, sha: str, r: TestResult) -> None:
         self.db.execute("INSERT OR REPLACE INTO results (student, problem, sha, test, grp, verdict, time_s, memory_mb, "
@@ -99,11 +102,12 @@ class ResultStore:
         return bool(row) and row[0] == "done"
 
     def submissions(self, problem: str | None = None) -> list[dict]:
-        q = "SELECT student, problem, sha, file, submitted_at, status, verdict, score, max_score, multiplier, note FROM submissions"
+        q = ("SELECT student, problem, sha, file, submitted_at, status, verdict, score, max_score, multiplier, note, "
+             "groups FROM submissions")
         rows = self.db.execute(q + (" WHERE problem=?" if problem else "") + " ORDER BY submitted_at, rowid",
                                (problem,) if problem else ()).fetchall()
         keys = ["student", "problem", "sha", "file", "submitted_at", "status", "verdict", "score", "max_score",
-                "multiplier", "note"]
+                "multiplier", "note", "groups"]
         return [dict(zip(keys, r)) for r in rows]
 
     def latest(self, problem: str) -> dict[str, dict]:

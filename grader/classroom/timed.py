@@ -7,7 +7,12 @@ problem's ``course.yaml`` ``timed`` section:
     timed: {duration_min: 30, grace_s: 60, late_policy: multiplier, late_multiplier: 0.5}
 
 ``late_policy`` is ``multiplier`` (score times ``late_multiplier``), ``reject`` (score 0) or
-``accept`` (no penalty, lateness only recorded).
+``accept`` (no penalty, lateness only recorded). A student's extra minutes in the course's
+``extensions.yaml`` (:mod:`grader.classroom.extensions`) lengthen their attempt: the deadline is
+always the start plus the duration plus their extra time, read when it is shown or applied, so
+an extension granted after the start (or after the submission: the scoreboard and the grades
+export recompute the late factor) counts too. ``start`` and ``status`` show the student their own
+deadline.
 
 Example:
     python -m grader timed start bowyer-watson-timed ada --db exam.sqlite
@@ -27,6 +32,7 @@ from pathlib import Path
 
 from ..contest.judge import Judge
 from ..problems import load_problem
+from . import extensions
 from .store import ResultStore
 from ..judging.submissions import read_submission_bytes
 from ..judging.verdicts import JudgeResult
@@ -68,6 +74,35 @@ def minutes_left(deadline: float, now: float | None = None) -> float:
     return (deadline - (time.time() if now is None else now)) / 60
 
 
+def deadline_for(problem: str, student: str, started_at: float) -> tuple[float, float]:
+    """The attempt's deadline (start + duration + the student's extension) and the extra minutes."""
+    t = _settings(problem)
+    extra = extensions.extra_seconds(student, problem)
+    return started_at + 60 * float(t["duration_min"]) + extra, extra / 60
+
+
+def late_factor(t: dict, seconds_late: float) -> tuple[float, str]:
+    """Score multiplier and note of a submission ``seconds_late`` after its deadline, under the
+    timed settings ``t`` (grace period first).
+
+    >>> late_factor({"grace_s": 60, "late_policy": "multiplier", "late_multiplier": 0.5}, 600)
+    (0.5, 'late: score x0.5')
+    """
+    if seconds_late <= float(t.get("grace_s", 0)):
+        return 1.0, "on time"
+    if t["late_policy"] == "reject":
+        return 0.0, "late: rejected"
+    if t["late_policy"] == "multiplier":
+        return float(t["late_multiplier"]), f"late: score x{t['late_multiplier']}"
+    return 1.0, "late (accepted)"
+
+
+def timed_multiplier(problem: str, student: str, started_at: float, submitted_at: float) -> float:
+    """The late factor of a timed submission, from the deadline as it is now (extensions included)."""
+    deadline, _ = deadline_for(problem, student, started_at)
+    return late_factor(_settings(problem), submitted_at - deadline)[0]
+
+
 def describe(info: dict, now: float | None = None) -> str:
     """One line for a student: start, deadline as local time, minutes left (or how late)."""
     left = minutes_left(info["deadline"], now)
@@ -76,7 +111,8 @@ def describe(info: dict, now: float | None = None) -> str:
             if info.get("already") else
             f"{info['student']}: {info['problem']} started at {clock(info['started_at'], now)}")
     tail = f"; submitted {clock(info['submitted_at'], now)}" if info.get("submitted_at") else ""
-    return f"{head}; {info['duration_min']} minutes, deadline {clock(info['deadline'], now)}: {when}{tail}"
+    extra = f" + {info['extra_min']:g} extra (your extension)" if info.get("extra_min") else ""
+    return f"{head}; {info['duration_min']} minutes{extra}, deadline {clock(info['deadline'], now)}: {when}{tail}"
 
 
 def status(problem: str, student: str, store: ResultStore, now: float | None = None) -> dict:
@@ -86,9 +122,10 @@ def status(problem: str, student: str, store: ResultStore, now: float | None = N
                            (student, problem)).fetchone()
     if row is None:
         raise ValueError(f"{student} has not started a timed attempt at {problem!r} (run `timed start` first)")
-    return {"student": student, "problem": problem, "started_at": row[0], "deadline": row[1],
-            "submitted_at": row[2], "duration_min": t["duration_min"],
-            "minutes_left": round(minutes_left(row[1], now), 2)}
+    deadline, extra = deadline_for(problem, student, row[0])
+    return {"student": student, "problem": problem, "started_at": row[0], "deadline": deadline,
+            "submitted_at": row[2], "duration_min": t["duration_min"], "extra_min": extra,
+            "minutes_left": round(minutes_left(deadline, now), 2)}
 
 
 def start(problem: str, student: str, store: ResultStore, now: float | None = None) -> dict:
@@ -98,15 +135,16 @@ def start(problem: str, student: str, store: ResultStore, now: float | None = No
     row = store.db.execute("SELECT started_at, deadline FROM timed WHERE student=? AND problem=?",
                            (student, problem)).fetchone()
     if row is None:
-        deadline = now + 60 * float(t["duration_min"])
+        deadline, _ = deadline_for(problem, student, now)
         store.db.execute("INSERT INTO timed (student, problem, started_at, deadline) VALUES (?,?,?,?)",
                          (student, problem, now, deadline))
         row, already = (now, deadline), False
     else:
         already = True
-    return {"student": student, "problem": problem, "started_at": row[0], "deadline": row[1],
-            "duration_min": t["duration_min"], "already": already,
-            "minutes_left": round(minutes_left(row[1], now), 2)}
+    deadline, extra = deadline_for(problem, student, row[0])
+    return {"student": student, "problem": problem, "started_at": row[0], "deadline": deadline,
+            "duration_min": t["duration_min"], "extra_min": extra, "already": already,
+            "minutes_left": round(minutes_left(deadline, now), 2)}
 
 
 def submit(problem: str, student: str, path: str | Path, store: ResultStore, now: float | None = None,
@@ -118,7 +156,8 @@ def submit(problem: str, student: str, path: str | Path, store: ResultStore, now
                            (student, problem)).fetchone()
     if row is None:
         raise ValueError(f"{student} has not started a timed attempt at {problem!r} (run `timed start` first)")
-    started, deadline = row
+    started = row[0]
+    deadline, _ = deadline_for(problem, student, started)
     elapsed = now - started
     late = now > deadline + float(t["grace_s"])
     path = Path(path)
@@ -130,13 +169,9 @@ def submit(problem: str, student: str, path: str | Path, store: ResultStore, now
     multiplier, note = 1.0, f"elapsed {elapsed / 60:.1f} min"
     if late:
         over = (now - deadline) / 60
-        if t["late_policy"] == "reject":
-            multiplier, note = 0.0, f"{note}, late by {over:.1f} min: rejected"
-        elif t["late_policy"] == "multiplier":
-            multiplier = float(t["late_multiplier"])
-            note = f"{note}, late by {over:.1f} min: score x{t['late_multiplier']}"
-        else:
-            note = f"{note}, late by {over:.1f} min (accepted)"
+        multiplier, why = late_factor(t, now - deadline)
+        note = f"{note}, late by {over:.1f} min: " + {"late: rejected": "rejected",
+                                                      "late (accepted)": "(accepted)"}.get(why, why[len("late: "):])
     store.finish(student, problem, sha, result, multiplier, note)
     store.db.execute("UPDATE timed SET submitted_at=?, elapsed_s=?, sha=?, late=? WHERE student=? AND problem=?",
                      (now, elapsed, sha, int(late), student, problem))

@@ -13,15 +13,20 @@ Example:
 
 from __future__ import annotations
 
+import dataclasses
+import hashlib
 import os
+import shutil
 import sys
 import time
 import traceback
+import weakref
 from pathlib import Path
 from typing import Callable, Sequence
 
 from ..judging import hidden_feedback
 from ..judging.check_budget import CheckTimeout, check_seconds, cpu_budget
+from ..judging.compile import COMPILE_LIMITS, COMPILE_WALL_S, CompileResult, build_dir, compile_source
 from ..problems import Problem, TestCase, load_problem
 from ..judging.runner import FunctionWorker, RunOutcome, idle_budget_for, output_paths, run_stdio
 from ..jail import Limits, Sandbox
@@ -128,12 +133,19 @@ class Judge:
     """Judges submissions for one problem; reusable (keeps the parsed tests)."""
 
     def __init__(self, problem: Problem | str, hide: Sequence[str | os.PathLike] = (), stop_at_first_failure: bool = False,
-                 trusted: bool | None = None, stderr_lines: int = 0):
+                 trusted: bool | None = None, stderr_lines: int = 0, compile_limits: Limits | None = None):
         """``trusted``: where no kernel jail can be built, judge without one instead of raising
         :class:`grader.jail.JailUnavailable` (a student's own code; default ``$GRADER_TRUSTED``).
         ``stderr_lines``: a failing test keeps the last that many lines of the submission's stderr
-        in ``TestResult.stderr`` (0: none)."""
+        in ``TestResult.stderr`` (0: none). ``compile_limits``: the compile step's limits for a
+        compiled language (default :data:`grader.judging.compile.COMPILE_LIMITS`; its wall-clock
+        cap is :data:`grader.judging.compile.COMPILE_WALL_S`, or twice the CPU time if longer)."""
         self.stderr_lines = stderr_lines
+        self.compile_limits = compile_limits or COMPILE_LIMITS
+        self._build: tuple[tuple[str, str], CompileResult, weakref.finalize] | None = None
+        #: keep the last build between judgings (``stress`` judges one submission many times; it
+        #: calls :meth:`drop_build` when done); otherwise the binary is removed after each judging
+        self.keep_build = False
         self.problem = load_problem(problem) if isinstance(problem, str) else problem
         self.trusted = trusted
         self.stop_at_first_failure = stop_at_first_failure
@@ -187,11 +199,50 @@ class Judge:
         mode = sub.mode(self.problem.entry)
         if mode == "missing":
             return self._all(name, Verdict.CE, sub.missing_entry_message(self.problem.entry), mode, on_test)
+        if not sub.compiled or all(t.name in prior for t in self.tests):
+            return self._judge(sub, name, mode, t0, on_test, prior, deadline)
+        try:
+            built = self.compiled(sub)  # a compiled language: compiled once, before any test
+            if not built.ok:
+                result = self._all(name, Verdict.CE, built.message, mode, on_test)
+                result.judge_time_s = time.monotonic() - t0
+                return result
+            return self._judge(sub, name, mode, t0, on_test, prior, deadline, built.binary)
+        finally:
+            if not self.keep_build:
+                self.drop_build()
+
+    def drop_build(self) -> None:
+        """Remove the kept build (the binary of the last compiled submission), if any."""
+        if self._build is not None:
+            self._build[2]()
+            self._build = None
+
+    def compiled(self, sub: Submission) -> CompileResult:
+        """``sub`` compiled in the compile jail; the build is kept until :meth:`drop_build`, the next
+        build or the end of this judge (with :attr:`keep_build`, ``stress`` compiles once)."""
+        key = (sub.language.name, hashlib.sha256(sub.source.encode("utf-8", "surrogatepass")).hexdigest())
+        if self._build is not None and self._build[0] == key:
+            return self._build[1]
+        self.drop_build()
+        folder = build_dir()
+        done = weakref.finalize(self, _remove_build, folder, os.getpid())
+        built = compile_source(sub.source, sub.language, folder, hide=self.hide, trusted=self.trusted,
+                               limits=self.compile_limits, wall_s=max(COMPILE_WALL_S, 2 * self.compile_limits.cpu_s))
+        self._build = (key, built, done)
+        return built
+
+    def _judge(self, sub: Submission, name: str, mode: str, t0: float, on_test: Callable[[TestResult], None] | None,
+               prior: dict[str, TestResult], deadline: float | None, binary: str = "") -> JudgeResult:
+        """The loop over the tests (``binary``: a compiled submission's program, run per test)."""
+        time_limit = self.problem.time_limit_for(sub.language.name)
+        limits = dataclasses.replace(self.limits, cpu_s=time_limit)
         results: list[TestResult] = []
         failed_groups: set[str] = set()
         load_failure: tuple[Verdict, str] | None = None
-        idle_left = idle_budget_for(self.problem.time_limit)
-        with Sandbox(self.limits, hide=self.hide, cover=self.cover, trusted=self.trusted) as box:
+        idle_left = idle_budget_for(time_limit)
+        with Sandbox(limits, hide=self.hide, cover=self.cover, trusted=self.trusted, program=binary or None,
+                     no_processes=True if binary else None) as box:
             worker = None
             if mode == "function":
                 budget = self.problem.time_limit * len(self.tests) + 30
@@ -212,7 +263,7 @@ class Judge:
                     elif deadline is not None and time.monotonic() >= deadline:
                         r = TestResult(test.name, test.group, Verdict.SKIPPED, message="not run: the time given ran out")
                     else:
-                        r, idle = self._run_one(box, worker, sub, k, idle_left)
+                        r, idle = self._run_one(box, worker, sub, k, idle_left, time_limit, bool(binary))
                         idle_left -= idle
                         if worker is not None and worker.load_failure is not None and r.verdict in (Verdict.CE, Verdict.SV):
                             load_failure = (r.verdict, r.message)
@@ -258,8 +309,10 @@ class Judge:
             r.hidden_message = hidden_feedback.for_checker("WA", message)
 
     def _run_one(self, box: Sandbox, worker: FunctionWorker | None, sub: Submission, k: int,
-                 idle_left: float) -> tuple[TestResult, float]:
-        """One test's result and the wall time the submission spent not computing in it."""
+                 idle_left: float, time_limit: float | None = None, program: bool = False) -> tuple[TestResult, float]:
+        """One test's result and the wall time the submission spent not computing in it
+        (``time_limit``: the language's, default the problem's; ``program``: run the sandbox's binary)."""
+        time_limit = self.problem.time_limit if time_limit is None else time_limit
         test = self.tests[k]
         idle = 0.0
         before = err_before = 0
@@ -269,10 +322,10 @@ class Judge:
             if worker is not None:
                 before = _file_size(worker.out_paths[0])
                 err_before = _file_size(err_path)
-                outcome = worker.call(args, self.problem.time_limit, idle_left=idle_left)
+                outcome = worker.call(args, time_limit, idle_left=idle_left)
             else:
-                outcome = run_stdio(box, sub.source, test.input_text, self.problem.time_limit,
-                                    self.problem.forbidden, filename=sub.filename, idle_left=idle_left)
+                outcome = run_stdio(box, sub.source, test.input_text, time_limit, self.problem.forbidden,
+                                    filename=sub.filename, idle_left=idle_left, program=program)
             idle = outcome.idle_s
             r = TestResult(test.name, test.group, Verdict.JE, outcome.time_s, round(outcome.memory_mb, 1))
             if outcome.status == "ok":
@@ -298,8 +351,14 @@ class Judge:
         return r, idle
 
 
+def _remove_build(folder: str, owner: int) -> None:
+    """Remove a build folder, in the process that made it only (a forked worker leaves it)."""
+    if os.getpid() == owner:
+        shutil.rmtree(folder, ignore_errors=True)
+
+
 def judge_file(problem: str | Problem, path: str | Path, hide: Sequence[str] = ()) -> JudgeResult:
-    """Judge one file (``.py`` or ``.ipynb``) on one problem.
+    """Judge one file (``.py``, ``.ipynb`` or C++) on one problem.
 
     >>> judge_file("delaunay", "solutions/delaunay/accepted_walk.py").score   # doctest: +SKIP
     100

@@ -20,6 +20,19 @@ A reference solution that scores part of the points goes to ``submissions/partia
 where each goes is decided by judging it on the exported groups (``judge=False``: by its
 expected verdict only).
 
+The C++ reference solutions (``solutions/<problem>/expected_cpp.yaml``) go into ``submissions/``
+beside the Python ones, but a Kattis package has one time limit, the Python one of
+``problem.yaml``, while a C++ verdict was measured under the problem's C++ limit (course.yaml
+``time_limits``). So (:func:`cpp_placements`): an accepted one goes to ``accepted/``; a
+wrong one (WA, PE, RE, MLE: the time limit does not change them) where its expected failing
+groups say, from ``expected_cpp.yaml``; a too-slow one (TLE) only when the judge takes ``.cpp``
+and judging it under twice the package's limit (problemtools' safety margin) still fails
+(otherwise it is left out: under Python's limit an O(n^2) C++ program may pass); a compile error never (problemtools has no directory for
+it and reports it as an error). What was left out and why is printed on stderr and written in the
+package's ``README.md``. verifyproblem compiles C++ with its own flags (``g++ -O2 -static``, a
+newer ``-std``), not the course's, and the accepted programs pass there too
+(``tests/grader/test_kattis.py``).
+
 Example:
     python -m grader export-kattis delaunay build/kattis --groups tiny,large:1   # -> build/kattis/delaunay
     verifyproblem -p config data validators submissions build/kattis/delaunay
@@ -52,8 +65,8 @@ def shortname(problem_id: str) -> str:
     return name
 
 
-def _expected(problem_id: str) -> dict[str, list[str]]:
-    f = REPO / "solutions" / problem_id / "expected.yaml"
+def _expected(problem_id: str, name: str = "expected.yaml") -> dict[str, list[str]]:
+    f = REPO / "solutions" / problem_id / name
     if not f.is_file():
         return {}
     data = load_yaml_text(f.read_text()) or {}
@@ -64,6 +77,12 @@ def expected_verdicts(problem_id: str) -> dict[str, str]:
     """``solutions/<problem>/expected.yaml``: file name -> expected verdict (a value may name,
     after the verdict, the scored group that must kill the file: ``WA exhaustive``)."""
     return {k: v[0] for k, v in _expected(problem_id).items()}
+
+
+def expected_cpp(problem_id: str) -> dict[str, tuple[str, list[str]]]:
+    """``solutions/<problem>/expected_cpp.yaml``: C++ file -> (expected verdict, the groups it fails,
+    in the problem's order; empty for AC and CE)."""
+    return {k: (v[0], v[1:]) for k, v in _expected(problem_id, "expected_cpp.yaml").items()}
 
 
 def killing_groups(problem_id: str) -> dict[str, str]:
@@ -212,10 +231,110 @@ def export(problem: Problem | str, outdir: str | Path, groups: list[str] | None 
         base.with_suffix(".in").write_text(t.input_text)
         base.with_suffix(".ans").write_text(t.answer_text)
     if with_submissions:
-        for name, sub_dir in placements(exported, judge=judge, partial=groups is not None).items():
+        placed = placements(exported, judge=judge, partial=groups is not None)
+        cpp, left_out = cpp_placements(exported, judge=judge, partial=groups is not None)
+        for name, sub_dir in {**placed, **cpp}.items():
             (dest / "submissions" / sub_dir).mkdir(parents=True, exist_ok=True)
             shutil.copy(REPO / "solutions" / p.id / name, dest / "submissions" / sub_dir / Path(name).name)
+        for name, why in left_out.items():
+            print(f"export-kattis: {p.id}/{name} left out of submissions/: {why}", file=sys.stderr)
+        (dest / "README.md").write_text(package_readme(p, {**placed, **cpp}, left_out))
     return dest
+
+
+def cpp_placements(p: Problem, judge: bool = True, partial: bool = False) -> tuple[dict[str, str], dict[str, str]]:
+    """The C++ reference solutions of ``expected_cpp.yaml`` for a package holding ``p``'s groups
+    and tests (see :func:`selection`): (file -> ``submissions/`` directory, file left out -> why).
+
+    The package's time limit is ``p.time_limit`` (Python's); a C++ verdict was measured under
+    ``p.time_limit_for("cpp")``. AC stays AC under a limit at least as long; WA, PE, RE and MLE
+    do not depend on it, so they are placed from the expected failing groups: none of them
+    exported -> left out (``partial``) or ``ValueError``; some -> ``partially_accepted``; all ->
+    the verdict's directory, when the first failing group overall is exported (else the first
+    exported failure's verdict is unknown: left out). When ``judge`` and the judge takes ``.cpp``,
+    every non-AC file is judged instead, under :data:`TLE_SAFETY` times the package's limit, and
+    placed as :func:`placements` places Python; one that passes everything there is left out."""
+    from ..judging.languages import language_of
+
+    out: dict[str, str] = {}
+    left: dict[str, str] = {}
+    exported = [g.name for g in p.groups if g.points > 0]
+    limit = f"the package's time limit of {p.time_limit:g} s (Python's; C++'s is {p.time_limit_for('cpp'):g} s)"
+    for name, (verdict, failing) in expected_cpp(p.id).items():
+        src = REPO / "solutions" / p.id / name
+        if not src.is_file() or verdict not in KATTIS_DIRS:
+            if verdict == "CE":
+                left[name] = "a compile error (problemtools has no directory for one; verifyproblem reports it as an error)"
+            elif src.is_file():
+                raise ValueError(f"{p.id}: expected_cpp.yaml: {name}: unknown verdict {verdict!r}")
+            continue
+        if verdict == "AC":
+            out[name] = "accepted"
+        elif judge and language_of(src) is not None:
+            placed = _judged_cpp(p, name, src, verdict, partial, limit)
+            if placed is None:
+                left[name] = f"it passes every exported group under {TLE_SAFETY:g} times {limit}"
+            else:
+                out[name] = placed
+        elif verdict == "TLE":
+            left[name] = (f"its TLE was measured under the C++ time limit; under {limit} it must be judged, and "
+                          + ("it was not (--no-judge)" if not judge else "the judge here does not take .cpp"))
+        else:
+            failed = [g for g in exported if g in failing]
+            if not failed:
+                if not partial:
+                    raise ValueError(f"{p.id}: {name} (expected {verdict} {' '.join(failing)}) fails no exported "
+                                     f"group ({', '.join(exported)}): check expected_cpp.yaml")
+                left[name] = f"it fails only {', '.join(failing)}, which is not exported"
+            elif len(failed) < len(exported):
+                out[name] = "partially_accepted"
+            elif failing and failing[0] in exported:
+                out[name] = KATTIS_DIRS[verdict]
+            else:
+                left[name] = f"its first failure ({failing[0]}) is not exported, so its verdict here is unknown"
+    return out, left
+
+
+#: problemtools' ``time_safety_margin``: a submission in ``time_limit_exceeded/`` must still time
+#: out under this many times the package's limit, so a C++ file is judged under that limit
+TLE_SAFETY = 2.0
+
+
+def _judged_cpp(p: Problem, name: str, src: Path, verdict: str, partial: bool, limit: str) -> str | None:
+    """Judge a C++ file on ``p``'s tests under :data:`TLE_SAFETY` times the package's time limit
+    (so that a TLE placed here is a TLE for verifyproblem however fast its machine); its
+    ``submissions/`` directory, or None when it passes everything."""
+    from ..judging.languages import language_of
+    from .judge import Judge
+
+    lang = language_of(src)
+    q = dataclasses.replace(p, time_limits={**p.time_limits, lang.name: TLE_SAFETY * p.time_limit})
+    q.__dict__["_tests"] = p.tests()
+    result = Judge(q, hide=[str(src.parent)]).judge_path(src)
+    if result.score == result.max_score:
+        if verdict != "TLE" and not partial:
+            raise ValueError(f"{p.id}: {name} (expected {verdict}) passes every exported test under {limit}")
+        return None  # a TLE: within twice the package's limit, where its verdict depends on the machine
+    if result.score > 0:
+        return "partially_accepted"
+    return KATTIS_DIRS.get(str(result.verdict), "wrong_answer")
+
+
+def package_readme(p: Problem, placed: dict[str, str], left_out: dict[str, str]) -> str:
+    """The package's notes: where each reference solution went, what was left out and why, and
+    what a judge of the package sees differently from the course's judge."""
+    lines = [f"# {p.title} ({shortname(p.id)}): exported by `python -m grader export-kattis {p.id}`", "",
+             "## Submissions", ""]
+    lines += [f"- `submissions/{d}/{Path(n).name}`" for n, d in sorted(placed.items(), key=lambda x: (x[1], x[0]))]
+    if left_out:
+        lines += ["", "Left out:", ""] + [f"- `{n}`: {why}" for n, why in sorted(left_out.items())]
+    lines += ["", "## Limits", "",
+              f"The package has one time limit, {p.time_limit:g} s per test (`problem.yaml`), the course's "
+              f"limit for Python. The course judges C++ under its own limit ({p.time_limit_for('cpp'):g} s), "
+              "which a Kattis package cannot state, so a C++ program that the course stops as too slow may "
+              "pass here. problemtools and other judges compile C++ with their own flags; the course uses "
+              "the command in the statement's \"Submitting in C++\" section.", ""]
+    return "\n".join(lines)
 
 
 def embed_checker(p: Problem) -> str:

@@ -9,9 +9,16 @@ vs your answer) to it: the first call of a session imports matplotlib for the pi
 takes longer than judging the samples, so the verdicts do not wait for it. The cell holds only magics,
 which the judge drops, so it is never part of what the judge runs.
 
+``%check_samples PROBLEM FILE`` checks another file instead (a path relative to the notebook's
+folder): a ``.py`` program, another notebook, or a ``.cpp`` file once C++ is among the judge's
+languages. Nothing here depends on the language: the file goes to the judge as
+``python -m grader judge`` would send it, and the judge says what it accepts (a file it does not
+take is ``CE`` with the accepted kinds in the message).
+
 Example (a notebook cell):
     %load_ext grader.sample_check
     %check_samples delaunay
+    %check_samples delaunay mine.cpp
 """
 
 from __future__ import annotations
@@ -33,7 +40,7 @@ MAX_DRAW_ITEMS = 3000
 
 def is_sample_group(group: Group) -> bool:
     """Sample groups are public (committed under ``data/sample``) and worth no points."""
-    return group.points == 0 and bool(group.data) and "sample" in Path(group.data).parts
+    return group.public
 
 
 def sample_problem(problem: Problem) -> Problem:
@@ -61,11 +68,29 @@ def find_notebook(problem_id: str, cwd: Path | None = None) -> Path:
 
 
 def judge_samples(problem_id: str, notebook: Path) -> tuple[JudgeResult, Problem]:
-    """Judge ``notebook`` on the samples of ``problem_id`` in the sandbox."""
+    """Judge ``notebook`` (or any submission file the judge takes: ``.py``, ``.cpp``, ...) on the
+    samples of ``problem_id`` in the sandbox."""
     problem = sample_problem(load_problem(problem_id))
-    # the student's own notebook: in the kernel jail where there is one, else in the trusted mode
+    # the student's own file: in the kernel jail where there is one, else in the trusted mode
     judge = Judge(problem, hide=[str(notebook.resolve().parent)], trusted=True)
     return judge.judge_path(notebook), problem
+
+
+def parse_line(line: str, cwd: Path | None = None) -> tuple[str, Path | None]:
+    """``PROBLEM [FILE]`` -> (problem id, the file to check or None for the notebook itself).
+
+    >>> parse_line("delaunay")
+    ('delaunay', None)
+    """
+    parts = line.split()
+    if not 1 <= len(parts) <= 2:
+        raise ValueError("usage: %check_samples PROBLEM_ID [FILE]")
+    if len(parts) == 1:
+        return parts[0], None
+    path = (cwd or Path.cwd()) / parts[1]
+    if not path.is_file():
+        raise ValueError(f"problem {parts[0]!r}: no file {parts[1]} in {path.parent}")
+    return parts[0], path
 
 
 def table_html(result: JudgeResult) -> str:
@@ -129,21 +154,20 @@ def picture_figure(problem: Problem, result: JudgeResult, entry_fn=None):
 
 
 def check_samples(line: str) -> None:
-    """The ``%check_samples PROBLEM`` line magic."""
+    """The ``%check_samples PROBLEM [FILE]`` line magic."""
     from IPython import get_ipython
     from IPython.display import HTML, display
 
-    problem_id = line.strip()
-    if not problem_id:
-        raise ValueError("usage: %check_samples PROBLEM_ID")
-    notebook = find_notebook(problem_id)
+    problem_id, other = parse_line(line)
+    notebook = other or find_notebook(problem_id)
     saved = time.strftime("%H:%M:%S", time.localtime(notebook.stat().st_mtime))
     result, problem = judge_samples(problem_id, notebook)
     jail = html.escape(str(result.to_json().get("sandbox", "")))
     head = f"<p>judged {html.escape(notebook.name)} as saved at {saved} (jail: {jail})</p>{table_html(result)}"
     shown = display(HTML(head), display_id=True)  # the verdicts at once; the picture follows
     ip = get_ipython()
-    entry_fn = ip.user_ns.get(problem.entry) if ip is not None else None
+    # the kernel's function is this notebook's answer, not another file's
+    entry_fn = ip.user_ns.get(problem.entry) if ip is not None and other is None else None
     png = picture_png(problem, result, entry_fn if callable(entry_fn) else None)
     if png:
         img = f'<img alt="sample picture" src="data:image/png;base64,{base64.b64encode(png).decode()}">'

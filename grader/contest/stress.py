@@ -181,6 +181,7 @@ class _Runner:
         self.problem = problem
         self.judge = Judge(problem, hide=[str(path.resolve().parent)], stop_at_first_failure=True,
                            stderr_lines=STDERR_LINES)
+        self.judge.keep_build = True  # a compiled submission is compiled once for the whole search
         self.sub = Submission.from_path(path, follow_links=True)
         self.deadline = deadline
         self.stats = stats
@@ -252,6 +253,15 @@ def stress(problem_id: str | Problem, path: str | Path, seconds: float = 10.0, s
     stats = stats if stats is not None else Stats()
     deadline = time.monotonic() + seconds
     runner = _Runner(problem, path, deadline, stats)
+    try:
+        return _search(problem, runner, stats, deadline, seed, log)
+    finally:
+        runner.judge.drop_build()
+
+
+def _search(problem: Problem, runner: _Runner, stats: Stats, deadline: float, seed: int,
+            log: Callable[[str], None]) -> Failure | None:
+    """The search of :func:`stress` with its runner."""
     rng = random.Random(seed)
     pending = _first_cases(problem)
     found = None

@@ -6,6 +6,7 @@
 ``course_markdown``       statement markdown as nbgrader and formgrader render it
 ``student_edition``       what a student receives (``python -m grader.student_edition OUTDIR``)
 ``public_problems``       the problems without their hidden tests, for students' machines
+``grades_export``         the course's grades for Canvas and Moodle (``export-grades``)
 ========================  =================================================================
 
 Imports: every room below (classroom, contest, problems, judging, jail). The old module names

@@ -25,6 +25,7 @@ Example:
 from __future__ import annotations
 
 import hashlib
+import json
 import os
 import re
 import subprocess
@@ -46,6 +47,8 @@ from ..contest.sample_check import is_sample_group
 from ..jail import JailUnavailable, require_jail
 from ..contest.judge import Judge
 from ..problems import Problem, check_course, course_folder, load_problem, problems_root, using_course
+from ..classroom import regrade
+from ..classroom.regrade import fingerprints, version
 from ..classroom.store import ResultStore
 from ..judging.submissions import Submission, SubmissionError
 from ..judging.verdicts import DESCRIPTIONS, JudgeResult, TestResult, Verdict
@@ -53,6 +56,7 @@ from ..judging.verdicts import DESCRIPTIONS, JudgeResult, TestResult, Verdict
 STORE_NAME = "judged.sqlite"
 _FLOAT = re.compile(r"(?<![\w.])[-+]?(?:\d+\.\d*|\.\d+|\d+(?=[eE]))(?:[eE][-+]?\d+)?|\b(?:inf|nan)\b")
 _problems: dict[str, Problem] = {}
+_fps: dict[str, dict] = {}
 
 
 def mask_numbers(message: str) -> str:
@@ -78,9 +82,35 @@ def nbgrader_course_root(config) -> Path:
     return Path(root or os.getcwd()).resolve()
 
 
+def _fingerprints(problem: Problem) -> dict[str, dict]:
+    key = f"{problem.path.resolve()}\0fingerprints"
+    if key not in _fps:
+        _fps[key] = fingerprints(problem)
+    return _fps[key]
+
+
 def code_key(problem: Problem, source: str) -> str:
-    """The store key of a piece of code for a problem (changes when the code or the tests change)."""
+    """The store key of a piece of code for a problem: ``<code hash>-<problem version>`` (the version
+    changes when a group's tests, the checker, the limits or the points change; not when the
+    statement does: :mod:`grader.classroom.regrade`)."""
+    return f"{hashlib.sha256(f'{problem.id}{chr(0)}{source}'.encode()).hexdigest()[:16]}-" \
+           f"{version(_fingerprints(problem))}"
+
+
+def legacy_code_key(problem: Problem, source: str) -> str:
+    """The key a store made before per-group keys used: the code and the whole package's digest."""
     return hashlib.sha256(f"{problem.id}\0{problem.digest()}\0{source}".encode()).hexdigest()[:16]
+
+
+def _adopt_legacy(store: ResultStore, student: str, problem: Problem, source: str, key: str) -> None:
+    """Results stored under the previous key of this very code and package (nothing changed since)
+    are taken over under the new key instead of being judged again."""
+    old = legacy_code_key(problem, source)
+    if not store.is_done(student, problem.id, old) or store.prior(student, problem.id, key):
+        return
+    cols = "test, grp, verdict, time_s, memory_mb, message, input_preview, judged_at, hidden_message"
+    store.db.execute(f"INSERT OR IGNORE INTO results (student, problem, sha, {cols}) SELECT student, problem, ?, "
+                     f"{cols} FROM results WHERE student=? AND problem=? AND sha=?", (key, student, problem.id, old))
 
 
 def collection_time(folder: Path) -> float | None:
@@ -111,7 +141,14 @@ def judge_notebook_file(problem_id: str, path: Path, student: str, store_path: P
         prior = store.prior(student, problem.id, key)
         if store.is_done(student, problem.id, key) and len(prior) == len(problem.tests()):
             return JudgeResult(problem.id, str(path), [prior[t.name] for t in problem.tests()], problem.group_points)
-        store.begin(student, problem.id, str(path), key, time.time() if submitted_at is None else submitted_at)
+        _adopt_legacy(store, student, problem, code, key)
+        fps = _fingerprints(problem)
+        prev, changed = regrade.carry_over(store, student, problem, key.split("-")[0], key, fps)
+        if prev is not None:
+            regrade.start(store, problem.id, student, prev, key, changed)
+        prior = store.prior(student, problem.id, key)
+        store.begin(student, problem.id, str(path), key, time.time() if submitted_at is None else submitted_at,
+                    json.dumps(fps, sort_keys=True))
         judge = Judge(problem, hide=[*hide, str(path.resolve().parent), str(store_path.resolve().parent)])
         result = judge.judge_path(path, on_test=lambda r: store.add_test(student, problem.id, key, r), prior=prior)
         store.finish(student, problem.id, key, result)
@@ -120,20 +157,29 @@ def judge_notebook_file(problem_id: str, path: Path, student: str, store_path: P
         store.close()
 
 
-def _line(t: TestResult, hidden: bool) -> str:
-    """One test's feedback line. A hidden test shows only its ``hidden_message`` (the kind of mistake:
-    never the checker's detail, the student's exception text or prints; :mod:`grader.judging.hidden_feedback`)."""
-    if hidden:
-        msg = "" if t.verdict in (Verdict.AC,) else mask_numbers(t.hidden_message or DESCRIPTIONS.get(str(t.verdict), ""))
+def test_line(t: TestResult, hidden: bool, level: str = "message") -> str:
+    """One test's feedback line at a feedback ``level`` (:mod:`grader.judging.feedback_policy`).
+    A hidden test shows at most its ``hidden_message`` (the kind of mistake: never the checker's
+    detail, the student's exception text or prints; :mod:`grader.judging.hidden_feedback`), and
+    never its input, whatever the level."""
+    failed = t.verdict != Verdict.AC
+    if level == "verdict" or not failed:
+        msg = ""
+    elif hidden:
+        msg = mask_numbers(t.hidden_message or DESCRIPTIONS.get(str(t.verdict), ""))
     else:
         msg = (t.message.splitlines() or [""])[0][:300]
-    return f"{t.name:16} {str(t.verdict):3} {t.time_s:7.3f} s  {msg}".rstrip()
+    line = f"{t.name:16} {str(t.verdict):3} {t.time_s:7.3f} s  {msg}".rstrip()
+    if level == "input" and not hidden and failed and t.verdict != Verdict.SKIPPED and t.input_preview:
+        line += "\n    input:\n" + "\n".join("    " + ln for ln in t.input_preview.splitlines()[:24])
+    return line
 
 
-def group_output(result: JudgeResult, group: str, points: int) -> dict:
-    """The nbgrader output of a group's test cell: stdout when passed (full points), an error when not."""
+def group_output(result: JudgeResult, group: str, points: int, level: str = "message") -> dict:
+    """The nbgrader output of a hidden group's test cell at a feedback ``level``: stdout when passed
+    (full points), an error when not."""
     tests = [t for t in result.tests if t.group == group]
-    lines = [_line(t, hidden=True) for t in tests]
+    lines = [test_line(t, hidden=True, level=level) for t in tests]
     if result.group_passed(group):
         return nbformat.v4.new_output("stream", name="stdout",
                                       text=f"group {group}: all {len(tests)} tests accepted, {points}/{points} points\n"
@@ -147,9 +193,11 @@ def group_output(result: JudgeResult, group: str, points: int) -> dict:
 
 
 def write_results(nb: nbformat.NotebookNode, problem: Problem, result: JudgeResult) -> nbformat.NotebookNode:
-    """Put ``result`` into the notebook: each scored group's test cell, and the sample table in the check cell."""
+    """Put ``result`` into the notebook: each scored group's test cell, and the sample table in the
+    check cell, each at its group's feedback level (``course.yaml`` ``feedback``)."""
     by_cell = {group_cell_id(g.name): g for g in problem.groups if g.points > 0}
-    samples = [t for t in result.tests if any(is_sample_group(g) and g.name == t.group for g in problem.groups)]
+    public = {g.name for g in problem.groups if is_sample_group(g)}
+    samples = [t for t in result.tests if t.group in public]
     for cell in nb.cells:
         nbg = cell.get("metadata", {}).get("nbgrader", {})
         if cell.get("cell_type") != "code":
@@ -157,10 +205,10 @@ def write_results(nb: nbformat.NotebookNode, problem: Problem, result: JudgeResu
         gid = nbg.get("grade_id")
         if nbg.get("grade") and gid in by_cell:
             g = by_cell[gid]
-            cell.outputs = [group_output(result, g.name, g.points)]
+            cell.outputs = [group_output(result, g.name, g.points, problem.feedback_level(g.name))]
             cell.execution_count = 1
         elif gid == CHECK_ID:
-            text = "\n".join(_line(t, hidden=False) for t in samples)
+            text = "\n".join(test_line(t, hidden=False, level=problem.feedback_level(t.group)) for t in samples)
             cell.outputs = [nbformat.v4.new_output("stream", name="stdout",
                                                    text=f"samples, as judged at grading time:\n{text}\n")]
     return nb
@@ -205,27 +253,29 @@ def late_factor(problem_id: str, seconds_late: float) -> tuple[float, str]:
     >>> late_factor("bowyer-watson-timed", 600)
     (0.5, 'late: score x0.5')
     """
-    from ..classroom.timed import _settings
+    from ..classroom.timed import _settings, late_factor as timed_late_factor
 
     problem = _problem(problem_id)
     if not problem.timed or seconds_late <= 0:
         return 1.0, "on time"
-    t = _settings(problem_id)
-    if seconds_late <= float(t["grace_s"]):
-        return 1.0, "on time"
-    if t["late_policy"] == "reject":
-        return 0.0, "late: rejected"
-    if t["late_policy"] == "multiplier":
-        return float(t["late_multiplier"]), f"late: score x{t['late_multiplier']}"
-    return 1.0, "late (accepted)"
+    return timed_late_factor(_settings(problem_id), seconds_late)
 
 
 class CourseLatePolicy(LateSubmissionPlugin):
     """nbgrader late-submission plugin: a timed problem's policy from its ``course.yaml``; other
-    assignments fall back to nbgrader's ``penalty_method``."""
+    assignments fall back to nbgrader's ``penalty_method``. A student's extension in the course's
+    ``extensions.yaml`` (:mod:`grader.classroom.extensions`) is taken off the time late first."""
 
     def late_submission_penalty(self, student_id, score, total_seconds_late):
+        from ..classroom.extensions import extra_seconds
+
         assignment = getattr(self.parent, "assignment_id", "")
+        extra = extra_seconds(student_id, assignment) if assignment else 0.0
+        if extra:
+            self.log.info("%s: extension of %s s on %s", student_id, extra, assignment)
+            total_seconds_late = max(0.0, total_seconds_late - extra)
+            if total_seconds_late <= 0:
+                return 0.0
         try:
             timed = bool(_problem(assignment).timed)
         except ValueError:
@@ -348,6 +398,12 @@ def _grade_course(problem_id: str, submitted: Path, course_root: Path, jobs: int
             r = out[-1]
             _say(progress, f"[{len(out)}/{len(collected)}] {r['student']}: {r['verdict']} "
                            f"{r.get('score', '')}/{r.get('max_score', '')}")
+    store = ResultStore(store_path)
+    try:
+        for d in regrade.finish(store, problem_id):  # whose score moved since the tests were changed
+            _say(progress, f"{problem_id}: regraded " + regrade.diff_line(d))
+    finally:
+        store.close()
     if autograde:
         _say(progress, f"{problem_id}: nbgrader autograde --force in {course_root} ({len(collected)} notebook(s); "
                        "it reads the stored results and applies the late policy)")

@@ -11,7 +11,8 @@ Standard library only, and never imported by the grader itself. It
    themselves (``matplotlib.tri``, imported by ``matplotlib.pyplot``) is a violation only when
    the student's code imports it. Messages name the student's line that led there;
 2. reads the submission source from the control pipe and runs it (as module ``submission`` in
-   function mode, as ``__main__`` in stdio mode);
+   function mode, as ``__main__`` in stdio mode); in ``exec`` mode (a compiled program) it only
+   sets the program's stack limit, closes the control pipes and replaces itself with the binary;
 3. function mode: serves calls of the entry function, one JSON line per request/response.
    Results are converted to JSON-native values with exact type checks (numpy arrays and scalars
    become lists and numbers); anything else is reported as a wrong type, never passed on.
@@ -353,6 +354,8 @@ def main():
     if CONFIG.get("nproc"):  # not root: set here, inside the sandbox's user namespace (see Sandbox.inner_nproc)
         import resource
         resource.setrlimit(resource.RLIMIT_NPROC, (CONFIG["nproc"], CONFIG["nproc"]))
+    if CONFIG["mode"] == "exec":
+        _exec_program()
     lines = _read_lines(CTL_IN)
     first = json.loads(next(lines))
     sys.argv = [SUBMISSION_FILE]
@@ -408,6 +411,29 @@ def main():
             continue
         _send({"id": rid, "ok": payload})
     os._exit(0)
+
+
+def _exec_program():
+    """A compiled program (mode ``exec``): its stack may grow to ``stack_bytes`` (counted in memory
+    like the rest), the control pipes are closed (the program cannot write on them), then the
+    binary replaces this process (same pid, same limits, same seccomp filter)."""
+    import resource
+    stack = CONFIG.get("stack_bytes") or 0
+    if stack:
+        _, hard = resource.getrlimit(resource.RLIMIT_STACK)
+        want = stack if hard == resource.RLIM_INFINITY else min(stack, hard)
+        try:
+            resource.setrlimit(resource.RLIMIT_STACK, (want, want))
+        except (ValueError, OSError):
+            pass
+    os.close(CTL_IN)
+    os.close(CTL_OUT)
+    program = CONFIG["program"]
+    try:
+        os.execv(program, [program])
+    except OSError as exc:
+        os.write(2, f"the program could not be started: {exc.strerror}\n".encode())
+        os._exit(127)
 
 
 def _flush_and_exit(code):

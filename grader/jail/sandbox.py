@@ -62,7 +62,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Sequence
 
-from . import cgroups, engines, seccomp, uidpool
+from . import cgroups, engines, profiles, seccomp, uidpool
 from .errors import JailUnavailable
 from .fontcache import matplotlib_fontlist
 from .mounts import CLONE_NEWNET, CLONE_NEWUSER, JAIL_WORKDIR, MPL_DIR, Plan, jail_filesystem, stage_for_bwrap, unshare
@@ -231,10 +231,21 @@ class Sandbox:
     other installed copy of the same modules, and the engines they wrap, are covered too.
     ``trusted`` (default: ``$GRADER_TRUSTED`` is ``1``) allows running without a kernel jail where
     none can be built, instead of raising :class:`JailUnavailable` (a student's own code only).
+    ``profile="compile"``: the compile jail (:mod:`grader.jail.profiles`; host folder :attr:`scratch`);
+    ``program``: a binary shown read-only in the run jail; ``no_processes``: the seccomp filter kills
+    new processes (default: without a cgroup). Both need bubblewrap (``namespaces`` refuses them).
     """
 
     def __init__(self, limits: Limits, hide: Sequence[str | os.PathLike] = (), cover: Sequence[str] = (),
-                 trusted: bool | None = None):
+                 trusted: bool | None = None, profile: str = "run", program: str | None = None,
+                 no_processes: bool | None = None):
+        if profile not in ("run", "compile"):
+            raise ValueError(f"unknown sandbox profile {profile!r} (run, compile)")
+        self.profile, self.program = profile, program
+        self.no_processes = (not is_root()) if no_processes is None else no_processes
+        if profile == "compile":
+            self.no_processes = False
+        self.scratch = ""  # compile profile: the host folder the compiler reads and writes
         self.limits = limits
         self.trusted = os.environ.get(TRUSTED_ENV) == "1" if trusted is None else trusted
         self.root_mode = is_root()
@@ -271,6 +282,12 @@ class Sandbox:
             self.uid = self._slot.uid
             self.kill_all()  # leftovers from a crashed grader
             self.kind = jail_kind(self.uid)
+            try:
+                self._check_profile()
+            except BaseException:
+                self.close()
+                raise
+            self._make_scratch()
             extra = BWRAP_PROCESSES if self.kind == "bwrap" else 0
             self.group = cgroups.open_group(f"grader-sandbox-{self.uid}", self.limits.memory_mb,
                                             self.limits.processes + extra, self.uid)
@@ -279,11 +296,14 @@ class Sandbox:
             self.mechanism = "+".join(parts)
         elif self.kind == "bwrap":  # an ordinary user: the same allow-list, no processes but the student's
             self.group = cgroups.ProcTree(self.limits.memory_mb)
+            self._make_scratch()
             self._plan = self._make_plan()
-            self.mechanism = "+".join(["bwrap", self.group.mechanism] + (["seccomp-noproc"] if self._plan.seccomp else []))
+            filt = "seccomp-noproc" if self.no_processes else "seccomp"
+            self.mechanism = "+".join(["bwrap", self.group.mechanism] + ([filt] if self._plan.seccomp else []))
         else:
             self.kind = self.mechanism = "trusted"
             self.host_workdir = tempfile.mkdtemp(prefix="grader-work-")
+            self.scratch = self.host_workdir if self.profile == "compile" else ""
             fontlist = matplotlib_fontlist()
             if fontlist:
                 os.mkdir(os.path.join(self.host_workdir, ".matplotlib"))
@@ -293,6 +313,22 @@ class Sandbox:
 
     def __exit__(self, *exc: object) -> None:
         self.close()
+
+    def _check_profile(self) -> None:
+        """The compile jail and a program need bubblewrap (``namespaces`` has no view for them)."""
+        if self.kind == "namespaces" and (self.profile == "compile" or self.program):
+            raise JailUnavailable("compiling and running a compiled submission need the bubblewrap jail (apt-get "
+                                  f"install bubblewrap; {JAIL_ENV}={os.environ.get(JAIL_ENV, '')!r} gives the "
+                                  "'namespaces' jail)")
+
+    def _make_scratch(self) -> None:
+        """Compile profile: the host folder bound writable into the jail, owned by the sandbox's
+        uid (root) or this user, readable by nobody else."""
+        if self.profile != "compile":
+            return
+        self.scratch = tempfile.mkdtemp(prefix="grader-build-")
+        if self.uid is not None:
+            os.chown(self.scratch, self.uid, self.uid)
 
     def close(self) -> None:
         """Kill every process of the slot and delete its files (and its cgroup)."""
@@ -304,7 +340,7 @@ class Sandbox:
         if self.group is not None:
             self.group.close()
             self.group = None
-        for d in (self.private_dir, self.host_workdir):
+        for d in (self.private_dir, self.host_workdir, self.scratch):
             if d:
                 shutil.rmtree(d, ignore_errors=True)
         if self._slot is not None:
@@ -314,9 +350,18 @@ class Sandbox:
     def _make_plan(self) -> Plan:
         assert self.group is not None
         fontlist = matplotlib_fontlist()
-        prog = seccomp.program(no_processes=not self.root_mode)
+        prog = seccomp.program(no_processes=self.no_processes)
+        if self.kind == "bwrap" and self.profile == "compile":
+            staging = self.private_dir if self.root_mode else ""
+            plan = Plan([], [self.scratch], staging, [], self.files.mounts["/tmp"],
+                        cgroup_procs=self.group.procs_files, seccomp=prog, shm_mb=self.files.mounts["/dev/shm"])
+            trees = [d for d in profiles.SYSTEM_TREES if os.path.lexists(d)]
+            plan.bwrap = profiles.compile_bwrap_options(trees, os.path.join(staging, "0") if staging else self.scratch,
+                                                        plan.disk_mb, self._hidden)
+            return plan
         if self.kind == "bwrap":
-            expose = outermost(python_roots()) + ([fontlist] if fontlist else [])
+            expose = outermost(python_roots()) + ([self.program] if self.program else []) \
+                + ([fontlist] if fontlist else [])  # the font list last (see _bwrap_options)
             # root stages what bubblewrap (started as the sandbox uid) could not reach; a user binds directly
             plan = Plan([], expose, self.private_dir if self.root_mode else "", self._cover, self.files.mounts["/tmp"],
                         cgroup_procs=self.group.procs_files, seccomp=prog, shm_mb=self.files.mounts["/dev/shm"])
@@ -359,7 +404,9 @@ class Sandbox:
         for h in holds:
             a += ["--size", "4096", "--perms", "0755", "--tmpfs", h]
         for st, path in zip(staged, plan.expose):
-            if path != fontlist:
+            if path == self.program:
+                a += ["--ro-bind", st, profiles.JAIL_PROGRAM]
+            elif path != fontlist:
                 a += ["--ro-bind", st, path]
         for h in inside:
             if h not in holds:
@@ -415,7 +462,14 @@ class Sandbox:
     @property
     def child_workdir(self) -> str:
         """The working directory as the child sees it."""
+        if self.profile == "compile":
+            return profiles.COMPILE_WORKDIR if self.kind == "bwrap" else self.scratch
         return JAIL_WORKDIR if self.kind in ("bwrap", "namespaces") else self.host_workdir
+
+    @property
+    def program_path(self) -> str:
+        """Where the child finds :attr:`program` (the bound copy in a jail, the file itself when trusted)."""
+        return profiles.JAIL_PROGRAM if self.kind == "bwrap" else (self.program or "")
 
     def inner_nproc(self) -> int | None:
         """RLIMIT_NPROC for the child to set on itself once inside its own user namespace (not
@@ -426,6 +480,9 @@ class Sandbox:
     def child_env(self) -> dict[str, str]:
         """The scrubbed environment given to children."""
         home = self.child_workdir
+        if self.profile == "compile":  # the compiler's temporary files go to the jail's sized /tmp
+            return {"PATH": "/usr/bin:/bin", "HOME": profiles.COMPILE_WORKDIR if self.kind == "bwrap" else home,
+                    "TMPDIR": "/tmp" if self.kind == "bwrap" else home, "LANG": "C.UTF-8", "LC_ALL": "C.UTF-8"}
         env = {
             "PATH": "/usr/local/bin:/usr/bin:/bin", "HOME": home, "TMPDIR": home, "LANG": "C.UTF-8",
             "LC_ALL": "C.UTF-8", "OMP_NUM_THREADS": "1", "OPENBLAS_NUM_THREADS": "1",
@@ -442,7 +499,7 @@ class Sandbox:
         plan, uid, lim = self._plan, self.uid, self.limits
         # an account's jail sets RLIMIT_NPROC inside its user namespace (inner_nproc); trusted: as before
         nproc = lim.processes + (BWRAP_PROCESSES if self.kind == "bwrap" else 0) if self.root_mode else \
-            (lim.processes if self.kind == "trusted" else -1)
+            (lim.processes if self.kind == "trusted" and self.profile == "run" else -1)
         address_mb = self.address_space_mb()
         argv, fds, seccomp_fd = list(argv), list(pass_fds), -1
         if plan is not None and plan.bwrap:

@@ -11,6 +11,7 @@
 ``checker_protocol``      the checker protocol ``validate`` checks
 ``checker_attacks``       hostile answers every checker must survive
 ``hidden_feedback``       what a student sees of a hidden test
+``feedback_policy``       how much of a failing test a student sees, per group (``feedback:``)
 ========================  =================================================================
 
 Imports: the standard library, :mod:`grader.jail` and :mod:`reference_impl` only; never the

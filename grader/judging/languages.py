@@ -2,22 +2,20 @@
 
 One frozen :class:`Language` per language, in :data:`LANGUAGES`; nothing else in the grader lists
 file suffixes (submissions, class grading and the similarity corpus ask :func:`language_of` and
-:data:`SUFFIXES`). Only Python is judged today, as a ``.py`` file or the code cells of an ``.ipynb``
-notebook; a compiled language is one more entry (after DOMjudge's one compile and one run script
-per language), e.g. for C++::
-
-    Language(name="cpp", suffixes=(".cpp", ".cc"), compile=("g++", "-std=gnu++17", "-O2", "-o", "{binary}", "{source}"),
-             run=("{binary}",), modes=("stdio",))
-
-The judging loop then compiles once per submission (a compile error is ``CE``) and runs the
-binary in the jail per test; the time-limit rule says how a problem's limits apply to it.
+:data:`SUFFIXES`). Two languages are judged: Python (a ``.py`` file or the code cells of an
+``.ipynb`` notebook) and C++ (``.cpp``, ``.cc``, ``.cxx``). A compiled language is one entry with
+its compile command (after DOMjudge's one compile and one run script per language): the judging
+loop compiles once per submission in the compile jail (:mod:`grader.judging.compile`; a compile
+error is ``CE``) and runs the binary in the run jail per test; the time-limit rule says how a
+problem's limits apply to it. Suffixes are matched as written (``.PY`` and ``.CPP`` are not
+accepted), by :func:`language_of` and :meth:`Language.extraction` alike.
 
 Imports: the standard library only (the bottom of the judging room).
 
     >>> language_of("ada/delaunay.ipynb").name, PYTHON.extraction("ada/delaunay.ipynb")
     ('python', 'notebook')
-    >>> language_of("main.cpp") is None, SUFFIXES
-    (True, ('.py', '.ipynb'))
+    >>> language_of("main.cpp").name, language_of("main.CPP"), SUFFIXES
+    ('cpp', None, ('.py', '.ipynb', '.cpp', '.cc', '.cxx'))
 """
 
 from __future__ import annotations
@@ -55,7 +53,7 @@ class Language:
         >>> PYTHON.extraction("x.ipynb"), PYTHON.extraction("x.py")
         ('notebook', 'source')
         """
-        return "notebook" if PurePath(path).suffix.lower() in self.notebook_suffixes else "source"
+        return "notebook" if PurePath(path).suffix in self.notebook_suffixes else "source"
 
     def compile_command(self, source: str = "{source}", binary: str = "{binary}") -> tuple[str, ...]:
         """The compile command with its placeholders filled (empty when nothing is compiled).
@@ -80,20 +78,23 @@ PYTHON = Language(name="python", suffixes=(".py",), notebook_suffixes=(".ipynb",
 #: that the run jail needs no shared libraries); stdio mode only (the problem's text format on
 #: stdin and stdout); the time limit is the problem's C++ limit (course.yaml ``time_limits: {cpp: ..}``,
 #: set from the accepted C++ solution's slowest test, see ``benchmarks/bench_cpp_solutions.py``).
-#: Defined here for statements and the Kattis export; judged once it is in :data:`LANGUAGES`.
 CPP = Language(name="cpp", suffixes=(".cpp", ".cc", ".cxx"),
                compile=("g++", "-std=gnu++17", "-O2", "-pipe", "-static", "-s", "-o", "{binary}", "{source}"),
                run=("{binary}",), modes=("stdio",), time_limit="per-language")
 
 #: Every language the judge accepts, in order of preference.
-LANGUAGES: tuple[Language, ...] = (PYTHON,)
+LANGUAGES: tuple[Language, ...] = (PYTHON, CPP)
 
 #: Every accepted file suffix (a class folder's candidates, the similarity corpus).
 SUFFIXES: tuple[str, ...] = tuple(s for lang in LANGUAGES for s in lang.all_suffixes)
 
 
 def language_of(path: str | PurePath) -> Language | None:
-    """The language of a file by its suffix (case as written: ``.PY`` is not accepted), or None."""
+    """The language of a file by its suffix (case as written: ``.PY`` is not accepted), or None.
+
+    >>> language_of("a/b.cc").name, language_of("b.py").name, language_of("b.txt")
+    ('cpp', 'python', None)
+    """
     suffix = PurePath(path).suffix
     return next((lang for lang in LANGUAGES if suffix in lang.all_suffixes), None)
 
@@ -102,6 +103,6 @@ def accepted_files() -> str:
     """The accepted files in words, for messages (written out: a new language adds its words here).
 
     >>> accepted_files()
-    'a .py file or an .ipynb notebook'
+    'a .py file, an .ipynb notebook or a C++ file (.cpp, .cc, .cxx)'
     """
-    return "a .py file or an .ipynb notebook"
+    return "a .py file, an .ipynb notebook or a C++ file (.cpp, .cc, .cxx)"

@@ -578,13 +578,18 @@ class FunctionWorker:
 
 
 def run_stdio(box: Sandbox, source: str, input_text: str, time_limit: float, forbidden: Sequence[str],
-              filename: str = "submission.py", idle_left: float = float("inf")) -> RunOutcome:
+              filename: str = "submission.py", idle_left: float = float("inf"), program: bool = False) -> RunOutcome:
     """Run the submission once as a program with ``input_text`` on stdin; output in ``.value``.
-    It is stopped once it has spent ``idle_left`` seconds of wall time not computing."""
+    It is stopped once it has spent ``idle_left`` seconds of wall time not computing.
+    ``program``: run the sandbox's compiled binary (``Sandbox(program=...)``) instead of ``source``;
+    its stack may grow up to the memory limit."""
     if idle_left <= 0:
         return RunOutcome("timeout", message="the submission's wall-time budget is used up (it spent it "
                                              "sleeping or blocked)", time_s=time_limit)
-    config = _child_config(box, "stdio", "", forbidden, filename)
+    config = _child_config(box, "exec" if program else "stdio", "", forbidden, filename)
+    if program:
+        config.update(program=box.program_path, stack_bytes=box.limits.memory_mb << 20)
+        source = ""
     in_path = os.path.join(box.private_dir, "input.txt")
     out_path, err_path = output_paths(box)
     with open(in_path, "w") as f:
@@ -640,8 +645,21 @@ def run_stdio(box: Sandbox, source: str, input_text: str, time_limit: float, for
         cpu, mem = max(cpu, _cpu_seconds(box, 0) - cpu0), max(peak, _peak_rss_mb(box, 0))
     time_s = round(cpu, 4)
     outcome = _stdio_outcome(box, child, time_limit, time_s, mem, timed_out, junk, out_path, err_path)
+    if program and outcome.status == "crash" and child.exit_status == -signal.SIGABRT and _bad_alloc(err_path):
+        outcome = RunOutcome("memory", message="std::bad_alloc: the program could not get more memory (aborted)",
+                             time_s=time_s, memory_mb=mem)
     outcome.idle_s = max(0.0, wall - cpu - waited)
     return outcome
+
+
+def _bad_alloc(err_path: str) -> bool:
+    """Did a C++ program end on an uncaught ``std::bad_alloc`` (its message is the last of stderr)?"""
+    try:
+        with open(err_path, "rb") as f:
+            f.seek(max(0, os.path.getsize(err_path) - 4096))
+            return b"std::bad_alloc" in f.read()
+    except OSError:
+        return False
 
 
 def _stdio_outcome(box: Sandbox, child: _Child, time_limit: float, time_s: float, mem: float, timed_out: bool,

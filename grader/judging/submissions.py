@@ -1,5 +1,6 @@
-"""Student submissions: read a ``.py`` file or the code cells of an ``.ipynb`` notebook, and decide
-how to run it (function mode when it defines the entry function, stdio mode when it reads stdin).
+"""Student submissions: read a ``.py`` file, the code cells of an ``.ipynb`` notebook or a C++ file,
+and decide how to run it (Python: function mode when it defines the entry function, stdio mode
+when it reads stdin; C++: always stdio mode, compiled by the judge in its compile jail).
 
 Parsing here is static (``ast``), in the grader's process, on size-capped text: the code itself
 only ever runs in the sandbox. Files are read with :func:`read_submission_bytes`: no symbolic
@@ -22,7 +23,7 @@ import stat
 from dataclasses import dataclass
 from pathlib import Path
 
-from .languages import accepted_files, language_of
+from .languages import PYTHON, Language, accepted_files, language_of
 
 MAX_SOURCE_BYTES = 1 << 20
 #: What a student sees in place of a solution region (nbgrader's ``ClearSolutions.code_stub``,
@@ -127,28 +128,43 @@ def notebook_code(text: str) -> str:
 
 @dataclass
 class Submission:
-    """Source text of one submission plus its display name."""
+    """Source text of one submission, its display name and its language.
+
+    >>> Submission.from_source("int main() {}", "main.cpp").mode("delaunay")
+    'stdio'
+    """
 
     source: str
     filename: str
+    language: Language = PYTHON
 
     @classmethod
     def from_path(cls, path: str | Path, follow_links: bool = False) -> "Submission":
-        """Read a ``.py`` or ``.ipynb`` file with :func:`read_submission_bytes`."""
+        """Read a ``.py``, ``.ipynb`` or C++ file with :func:`read_submission_bytes`."""
         path = Path(path)
         language = language_of(path)
         if language is None:
             raise SubmissionError(f"{path.name}: a submission must be {accepted_files()}")
         text = read_submission_bytes(path, follow_links=follow_links).decode("utf-8", errors="replace")
         source = notebook_code(text) if language.extraction(path) == "notebook" else text
-        return cls(source, "submission.py")
+        return cls(source, "submission.py" if language is PYTHON else f"submission{language.suffixes[0]}", language)
 
     @classmethod
-    def from_source(cls, source: str, filename: str = "submission.py") -> "Submission":
-        return cls(source, filename)
+    def from_source(cls, source: str, filename: str = "submission.py", language: Language | None = None) -> "Submission":
+        """A submission from its text; the language is ``language``, else the one of ``filename``'s
+        suffix, else Python."""
+        return cls(source, filename, language or language_of(filename) or PYTHON)
+
+    @property
+    def compiled(self) -> bool:
+        """True for a language the judge compiles first (C++)."""
+        return bool(self.language.compile)
 
     def syntax_error(self) -> str | None:
-        """A student-facing message when the code does not parse, else None."""
+        """A student-facing message when the code does not parse, else None (a compiled language's
+        errors come from its compiler, in the compile jail)."""
+        if self.language is not PYTHON:
+            return None
         try:
             self._tree()
         except SyntaxError as exc:
@@ -186,7 +202,10 @@ class Submission:
         return False
 
     def mode(self, entry: str) -> str:
-        """'function' if ``entry`` is defined at top level, 'stdio' if the code reads stdin, else 'missing'."""
+        """'function' if ``entry`` is defined at top level, 'stdio' if the code reads stdin, else 'missing'
+        (a language without function mode: always 'stdio')."""
+        if "function" not in self.language.modes:
+            return "stdio"
         if entry in self.top_level_names():
             return "function"
         return "stdio" if self.reads_stdin() else "missing"

@@ -31,7 +31,7 @@ from pathlib import Path
 from types import ModuleType
 from typing import IO, Any
 
-from ..judging import checker_runtime
+from ..judging import checker_runtime, feedback_policy
 from ..judging.checker_runtime import load_checker, read_answer
 from . import cache
 from .cache import load_yaml, tests_folder
@@ -136,6 +136,11 @@ class Group:
     data: str | None = None  # a directory of committed .in/.ans files
     withheld: bool = False  # its tests are not in this copy (the student edition): points only
 
+    @property
+    def public(self) -> bool:
+        """A sample group: committed under ``data/sample``, worth no points, its tests public."""
+        return self.points == 0 and bool(self.data) and "sample" in Path(self.data).parts
+
 
 @dataclass
 class TestCase:
@@ -193,6 +198,8 @@ class Problem:
     #: per-language time limits (course.yaml ``time_limits: {cpp: 1.0}``); a language not named
     #: here gets ``time_limit`` (problem.yaml's, the limit of the Python solutions and of Kattis)
     time_limits: dict[str, float] = field(default_factory=dict)
+    #: group -> feedback level (course.yaml ``feedback``; :mod:`grader.judging.feedback_policy`)
+    feedback: dict[str, str] = field(default_factory=dict)
 
     @classmethod
     def load(cls, path: str | Path) -> "Problem":
@@ -222,7 +229,13 @@ class Problem:
             generator_path=(path / course["generator"]) if course.get("generator") else None,
             seed=int(course.get("seed", 0)), timed=dict(course.get("timed") or {}),
             time_limits=_time_limits(path.name, course.get("time_limits")),
+            feedback=feedback_policy.resolve(path.name, course.get("feedback"), {g.name: g.public for g in groups}),
         )
+
+    def feedback_level(self, group: str) -> str:
+        """How much a student's feedback shows of a failing test of ``group`` (a level of
+        :mod:`grader.judging.feedback_policy`)."""
+        return self.feedback.get(group, feedback_policy.DEFAULT)
 
     def time_limit_for(self, language: str) -> float:
         """The CPU-time limit per test for a language (its name in :mod:`grader.judging.languages`).

@@ -22,6 +22,13 @@ and the library never import ipywidgets):
   pictures drawn by the browser as SVG (an anywidget), from what the lesson drew on a
   matplotlib axes; a dragged point and its triangles move in the page at once.
 
+Every widget is usable without a mouse: Tab reaches its buttons, menus, sliders and its
+picture (a focus ring shows where); on a picker's picture the arrow keys move a cursor or the
+selected point (Shift: farther), Enter adds a point, ``]`` / ``[`` select one, Delete removes it,
+and a text box takes the points as ``x, y`` lines (``picker.parse_points_text``); a player's
+picture steps with the left / right arrows, Home and End (``canvas.KEYS``, ``canvas.PLAYER_KEYS``).
+Pictures carry an ARIA label, and a live region reads out the status line or the caption.
+
 Every widget also carries a static PNG for notebooks run without a browser.
 ``quick_mode()`` is true when the environment sets ``COURSE_QUICK=1`` (CI):
 lessons then use small sizes.

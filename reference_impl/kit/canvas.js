@@ -15,10 +15,21 @@
 //     and the release is always sent;
 //   - el.__kitStats records, per drawn move, the time to draw it and from the pointer
 //     event to the frame, and per answered move the time until the kernel's answer.
+// Without a mouse (the picture takes the focus: tabindex 0, a focus ring):
+//   arrow keys      move the + cursor, or the selected point (4 px; Shift: 20 px), sent as
+//                   the moves of one drag that ends when the key is released
+//   Enter           {kind: "add"} at the cursor
+//   ] / [ / Space   select the next / previous point / the one nearest the cursor; Escape: none
+//   Delete, Backspace  {kind: "remove", i} of the selected point
+// A player's picture (`stepper`): left / right arrow {kind: "step", by: -1 / 1} (Shift: 5),
+// Home / End by -1e6 / 1e6, Space {kind: "play"} (play / pause).  Keys the picture uses do not reach JupyterLab's shortcuts.
+// `label` is the picture's aria-label; `announce` fills a polite live region (the status line).
 
 const NS = "http://www.w3.org/2000/svg";
 const THROTTLE_MS = 50;
 const DRAG_START_PX = 3;
+const KEY_STEP_PX = 4, KEY_BIG_STEP_PX = 20;
+const ARROWS = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, -1], ArrowDown: [0, 1] };
 
 function esc(s) {
   return String(s).replace(/&/g, "&amp;").replace(/</g, "&lt;").replace(/>/g, "&gt;").replace(/"/g, "&quot;");
@@ -85,6 +96,15 @@ function render({ model, el }) {
   let ghost = null;      // [x, y]: a click's new point, until the kernel's points arrive
   let seq = 0, inflight = null, pending = false, lastSend = -1e9, timer = null, dragId = 0;
   const sentAt = new Map();
+  let sel = null;        // the point the keyboard has selected
+  let cursor = null;     // [x, y]: the keyboard's + cursor, in image pixels
+  let focused = false;
+  // the live region: screen readers read out the status line when it changes
+  const say = document.createElement("div");
+  say.className = "kit-live";
+  say.setAttribute("role", "status");
+  say.setAttribute("aria-live", "polite");
+  el.appendChild(say);
 
   function pts() { return model.get("points") || []; }
   function pos(i, P) {
@@ -154,6 +174,17 @@ function render({ model, el }) {
     }
     if (open) out.push("</g>");
     if (drag) out.push(`<circle cx="${drag.x}" cy="${drag.y}" r="6" fill="none" stroke="#d62728" stroke-width="1.5"/>`);
+    if (focused && live()) {
+      if (sel !== null && sel < P.length / 2) {
+        const [sx, sy] = pos(sel, P);
+        out.push(`<circle class="kit-selected" cx="${sx.toFixed(2)}" cy="${sy.toFixed(2)}" r="9" fill="none" ` +
+          `stroke="#ff7f0e" stroke-width="2.5"/>`);
+      } else {
+        const [ux, uy] = cursorAt();
+        out.push(`<path class="kit-cursor" d="M${ux - 8} ${uy}H${ux + 8}M${ux} ${uy - 8}V${uy + 8}" ` +
+          `stroke="#1a73e8" stroke-width="2"/>`);
+      }
+    }
     if (ghost) out.push(`<circle cx="${ghost[0]}" cy="${ghost[1]}" r="4" fill="#1f4e9c" fill-opacity="0.5"/>`);
     svg.innerHTML = out.join("");
     stats.draws += 1;
@@ -197,6 +228,7 @@ function render({ model, el }) {
   svg.classList.toggle("kit-interactive", live());
   svg.addEventListener("pointerdown", ev => {
     if (ev.button !== 0 || !live()) return;
+    svg.focus({ preventScroll: true });     // the keys work after a click too
     const [x, y] = local(ev);
     press = { i: hit(x, y), x, y, moved: false };
     svg.setPointerCapture(ev.pointerId);
@@ -239,6 +271,115 @@ function render({ model, el }) {
     }
   });
 
+  // -- the keyboard
+  function clip() {
+    const scene = model.get("scene") || {};
+    return scene.clip || [0, 0, scene.w || 440, scene.h || 400];
+  }
+  function inside(x, y) {
+    const [x0, y0, w, h] = clip();
+    return [Math.min(Math.max(x, x0), x0 + w), Math.min(Math.max(y, y0), y0 + h)];
+  }
+  function cursorAt() {
+    if (!cursor) { const [x0, y0, w, h] = clip(); cursor = [x0 + w / 2, y0 + h / 2]; }
+    return cursor;
+  }
+  function keyMove(ev, dx, dy) {
+    const P = pts();
+    const d = ev.shiftKey ? KEY_BIG_STEP_PX : KEY_STEP_PX;
+    if (sel === null || sel >= P.length / 2) {
+      sel = null;
+      const [ux, uy] = cursorAt();
+      cursor = inside(ux + dx * d, uy + dy * d);
+      draw();
+      return;
+    }
+    if (!drag || drag.i !== sel || drag.endSeq !== null || !drag.keys) {   // a key press starts a drag
+      const [x, y] = drag && drag.i === sel ? [drag.x, drag.y] : pos(sel, P);
+      dragId += 1;
+      drag = { i: sel, x, y, id: dragId, endSeq: null, keys: true };
+    }
+    [drag.x, drag.y] = inside(drag.x + dx * d, drag.y + dy * d);
+    const t0 = performance.now();
+    draw();
+    const t1 = performance.now();
+    const stamp = ev.timeStamp;
+    requestAnimationFrame(() => {
+      stats.frames.push({ draw: t1 - t0, toFrame: performance.now() - stamp, key: true });
+      if (stats.frames.length > 2000) stats.frames.shift();
+    });
+    sendMove(false);
+  }
+  function nearest(x, y) {
+    const P = pts();
+    let best = null, bestD = Infinity;
+    for (let i = 0; i < P.length / 2; i++) {
+      const d = Math.hypot(P[2 * i] - x, P[2 * i + 1] - y);
+      if (d < bestD) { best = i; bestD = d; }
+    }
+    return best;
+  }
+  function onKey(ev) {
+    if (ev.altKey || ev.ctrlKey || ev.metaKey) return;
+    const n = pts().length / 2;
+    if (!live()) {
+      if (!model.get("stepper")) return;
+      const by = { ArrowLeft: -1, ArrowRight: 1, ArrowUp: -1, ArrowDown: 1, Home: -1e6, End: 1e6 }[ev.key];
+      if (ev.key === " ") model.send({ kind: "play" });
+      else if (by === undefined) return;
+      else model.send({ kind: "step", by: Math.abs(by) === 1 && ev.shiftKey ? 5 * by : by });
+    } else if (ARROWS[ev.key]) {
+      keyMove(ev, ...ARROWS[ev.key]);
+    } else if (ev.key === "Enter") {
+      if (ev.repeat) { ev.preventDefault(); ev.stopPropagation(); return; }
+      const [ux, uy] = cursorAt();
+      ghost = [ux, uy];
+      draw();
+      model.send({ kind: "add", x: ux, y: uy });
+    } else if (ev.key === "]" || ev.key === "[") {
+      if (!n) return;
+      sel = sel === null ? (ev.key === "]" ? 0 : n - 1) : (sel + (ev.key === "]" ? 1 : n - 1)) % n;
+      draw();
+    } else if (ev.key === " ") {
+      sel = sel === null ? nearest(...cursorAt()) : null;
+      draw();
+    } else if (ev.key === "Escape") {
+      sel = null;
+      draw();
+    } else if (ev.key === "Delete" || ev.key === "Backspace") {
+      if (sel === null || sel >= n) return;
+      model.send({ kind: "remove", i: sel });
+      sel = null;
+      draw();
+    } else {
+      return;
+    }
+    ev.preventDefault();
+    ev.stopPropagation();        // not a notebook shortcut (Enter, arrows, ...) while the picture has the focus
+  }
+  svg.setAttribute("data-lm-suppress-shortcuts", "true");
+  svg.addEventListener("keydown", onKey);
+  svg.addEventListener("keyup", ev => {
+    if (ARROWS[ev.key] && drag && drag.keys && drag.endSeq === null) {   // the key's drag ends: send the release
+      if (timer) { clearTimeout(timer); timer = null; }
+      sendMove(true);
+    }
+  });
+  svg.addEventListener("focus", () => { focused = true; draw(); });
+  svg.addEventListener("blur", () => { focused = false; draw(); });
+  function describe() {
+    const keys = live() || model.get("stepper");     // a picture that takes keys is a tab stop; a mere picture is not
+    if (keys) svg.setAttribute("tabindex", "0"); else svg.removeAttribute("tabindex");
+    svg.setAttribute("role", keys ? "application" : "img");
+    svg.setAttribute("aria-label", model.get("label") || (live() ? "point picker" : "picture"));
+    if (say.textContent !== (model.get("announce") || "")) say.textContent = model.get("announce") || "";
+  }
+  describe();
+  model.on("change:label", describe);
+  model.on("change:stepper", describe);
+  model.on("change:interactive", () => { svg.classList.toggle("kit-interactive", live()); describe(); });
+  model.on("change:announce", describe);
+
   model.on("change:ack", () => {
     const a = model.get("ack");
     if (sentAt.has(a)) {
@@ -252,7 +393,11 @@ function render({ model, el }) {
     draw();
   });
   model.on("change:scene", draw);
-  model.on("change:points", () => { ghost = null; draw(); });
+  model.on("change:points", () => {
+    ghost = null;
+    if (sel !== null && sel >= pts().length / 2) sel = null;   // removed (by a click or the text box)
+    draw();
+  });
   draw();
   return () => { if (timer) clearTimeout(timer); };
 }

@@ -10,7 +10,11 @@ point and everything that refers to it at once, and sends the gestures back as
 messages, which ``on_gesture`` callbacks receive as sent (``SceneView.parse`` checks
 one, so that a callback that reports its own errors sees a malformed one too).  Only traits whose value changed
 travel: a move that leaves the triangles as they were sends the new points only.
-The front end is a file in the package (no build step, no network), and the widget
+The picture is
+usable without a mouse: it takes the keyboard focus (Tab; a visible focus ring), a picker's
+picture turns keys into the same gestures (see ``KEYS``) and a player's into ``step`` and ``play``; ``label``
+is its ARIA label and ``announce`` the text of a polite live region that screen readers read
+out when it changes (the status line).  The front end is a file in the package (no build step, no network), and the widget
 state that JupyterLab saves in a notebook holds the last scene, so a saved lesson
 reopened without a kernel still shows its pictures.
 
@@ -23,7 +27,7 @@ reopened without a kernel still shows its pictures.
 >>> SceneView.parse({"kind": "spin"})
 Traceback (most recent call last):
 ...
-ValueError: unknown gesture 'spin' (expected add, remove or move)
+ValueError: unknown gesture 'spin' (expected add, remove, move, step or play)
 """
 from __future__ import annotations
 
@@ -34,10 +38,27 @@ from typing import Any, Callable
 import anywidget
 import traitlets
 
-__all__ = ["SceneView", "ESM"]
+__all__ = ["SceneView", "ESM", "KEYS", "PLAYER_KEYS"]
 
 ESM = Path(__file__).with_name("canvas.js")
 """The front end: an ES module that anywidget loads into the page."""
+
+KEYS = (
+    ("Tab", "focus the picture (a blue ring shows it has the focus), then the buttons and the text box"),
+    ("arrow keys", "move the + cursor, or the selected point (4 pixels a press; with Shift 20)"),
+    ("Enter", "add a point at the + cursor"),
+    ("] or [", "select the next or previous point (its ring turns orange); Space: the point nearest the cursor"),
+    ("Delete or Backspace", "remove the selected point"),
+    ("Escape", "unselect the point (the arrow keys move the cursor again)"),
+)
+"""The picker's keys (canvas.js), as the kit's docs and the picker's help line list them."""
+
+PLAYER_KEYS = (
+    ("left / right arrow", "the previous / next step (with Shift: 5 steps)"),
+    ("Home / End", "the first / last step"),
+    ("Space", "play / pause"),
+)
+"""A player's picture's keys once it has the focus."""
 
 
 def _number(content: dict, key: str) -> float:
@@ -62,6 +83,10 @@ class SceneView(anywidget.AnyWidget):
     .kit-canvas { max-width: 100%; height: auto; }
     .kit-canvas.kit-interactive { cursor: crosshair; }
     .kit-canvas text { pointer-events: none; }
+    .kit-canvas:focus { outline: none; }
+    .kit-canvas:focus-visible { outline: 3px solid #1a73e8; outline-offset: 2px; }
+    .kit-live { position: absolute; width: 1px; height: 1px; overflow: hidden; clip: rect(0 0 0 0);
+                white-space: nowrap; }
     """
     scene = traitlets.Dict().tag(sync=True)
     points = traitlets.List(traitlets.Float()).tag(sync=True)
@@ -69,6 +94,12 @@ class SceneView(anywidget.AnyWidget):
     hit = traitlets.Float(9.0).tag(sync=True)
     interactive = traitlets.Bool(True).tag(sync=True)
     """False: a picture only (a step player's), the mouse sends nothing."""
+    stepper = traitlets.Bool(False).tag(sync=True)
+    """True (a player's picture): the arrow keys, Home and End send ``step`` gestures."""
+    label = traitlets.Unicode("").tag(sync=True)
+    """The picture's ARIA label (what a screen reader says it is)."""
+    announce = traitlets.Unicode("").tag(sync=True)
+    """The text of the picture's live region (``aria-live="polite"``): the status line."""
 
     def __init__(self, width: int = 440, height: int = 400, **kwargs: Any) -> None:
         super().__init__(**kwargs)
@@ -89,6 +120,8 @@ class SceneView(anywidget.AnyWidget):
         Traceback (most recent call last):
         ...
         ValueError: gesture 'remove': i must be a point index, got -1
+        >>> SceneView.parse({"kind": "step", "by": -1})
+        {'kind': 'step', 'by': -1}
         """
         if not isinstance(content, dict):
             raise ValueError(f"a gesture is a dict, got {type(content).__name__}")
@@ -97,7 +130,14 @@ class SceneView(anywidget.AnyWidget):
             return {"kind": "add", "x": _number(content, "x"), "y": _number(content, "y")}
         if kind == "remove":
             return {"kind": "remove", "i": _index(content)}
+        if kind == "play":
+            return {"kind": "play"}
+        if kind == "step":
+            by = content.get("by")
+            if isinstance(by, bool) or not isinstance(by, int):
+                raise ValueError(f"gesture 'step': by must be a whole number of steps, got {by!r}")
+            return {"kind": "step", "by": by}
         if kind == "move":
             return {"kind": "move", "i": _index(content), "x": _number(content, "x"), "y": _number(content, "y"),
                     "seq": _index(content, "seq"), "drag": _index(content, "drag"), "end": bool(content.get("end"))}
-        raise ValueError(f"unknown gesture {kind!r} (expected add, remove or move)")
+        raise ValueError(f"unknown gesture {kind!r} (expected add, remove, move, step or play)")

@@ -22,6 +22,15 @@ triangles, the pseudocode's last line) and
 <b>step 3/11</b>: insert point 2 at (5, 1): it lies outside the current hull (only ghost triangles contain it)
 >>> "image/png" in p._repr_mimebundle_()
 True
+>>> p.handle_gesture({"kind": "step", "by": 1}); p.index      # the right arrow on the focused picture
+3
+>>> p.image.announce.split(":")[0]           # what a screen reader says
+'step 4/11'
+
+Without a mouse: Tab reaches play, previous, next and the slider (whose arrow keys move it); the
+picture itself takes the focus too, and then the left / right arrow keys step (Shift: 5 steps),
+Home and End go to the first and last step, Space plays and pauses (``canvas.PLAYER_KEYS``).  The caption is said by a
+live region as the steps change.
 """
 from __future__ import annotations
 
@@ -346,8 +355,12 @@ class StepPlayer(KitWidget):
         widgets.jslink((self.play, "value"), (self.slider, "value"))
         self.prev = button("previous", "step-backward")
         self.next = button("next", "step-forward")
-        self.image = SceneView(*size, interactive=False)     # drawn by the browser (kit/canvas.js)
+        self.image = SceneView(*size, interactive=False, stepper=True)   # drawn by the browser (kit/canvas.js)
         self.image.add_class("kit-player-image")
+        self.image.label = (f"{title or 'step player'}: left and right arrow keys step, Home and End go to "
+                            "the first and last step, Space plays and pauses")
+        self.image.on_gesture(self.guard(self.handle_gesture))
+        self.prev.tooltip, self.next.tooltip = "the previous step", "the next step"
         self.caption = widgets.HTML()
         self.code = widgets.HTML(layout=widgets.Layout(flex="1 1 auto", min_width="14em"))
         controls = widgets.HBox([self.play, self.prev, self.next, self.slider])
@@ -381,6 +394,17 @@ class StepPlayer(KitWidget):
     def _go(self, value: int) -> None:
         self.slider.value = max(0, min(len(self.steps) - 1, int(value))) + 1
 
+    def handle_gesture(self, gesture: Any) -> None:
+        """A key pressed on the focused picture: ``{"kind": "step", "by": k}`` moves k steps (clamped),
+        ``{"kind": "play"}`` plays or pauses."""
+        g = SceneView.parse(gesture)
+        if g["kind"] == "play":                     # Space: play / pause (the Play widget runs in the page)
+            self.play.playing = not self.play.playing
+            return
+        if g["kind"] != "step":
+            raise ValueError(f"a step player's picture takes step and play gestures, got {g['kind']!r}")
+        self._go(self.index + g["by"])
+
     # -- drawing
     def _draw_step(self, ax, k: int) -> None:
         self._draw(ax, self.steps[k], k)
@@ -390,8 +414,9 @@ class StepPlayer(KitWidget):
         ax = self.canvas.clear(bounds=self._bounds, title=self.title)
         self._draw_step(ax, k)
         self.image.scene = axes_scene(self.canvas)
-        self.caption.value = f"<b>step {k + 1}/{len(self.steps)}</b>: " + html.escape(
-            self._describe(self.steps[k]))
+        said = self._describe(self.steps[k])
+        self.caption.value = f"<b>step {k + 1}/{len(self.steps)}</b>: " + html.escape(said)
+        self.image.announce = f"step {k + 1}/{len(self.steps)}: {said}"
         self.code.value = self._pseudocode_html()
 
     def _pseudocode_html(self) -> str:

@@ -5,7 +5,7 @@
   shown as ``bob\\x1b``) stay two students, two CSV rows, two reports, and the collision is said;
 * a student marked done whose report is missing (what a ``kill -9`` between the two used to
   leave) gets the report rebuilt on resume and a link in the index;
-* changing the problem's points judges everyone again, and says so (stderr, CSV note);
+* changing the problem's points rescores everyone without judging a test again, and says so (stderr, CSV note);
 * a file dated 2020-01-01 is not "submitted" in 2020: times are the grader's first sight of the
   content, and the scoreboard and the choice between files use them.
 
@@ -100,9 +100,13 @@ def test_changed_points_judge_again_and_say_so(tmp_path, problems, capsys):
     capsys.readouterr()
     out = grade_class("tiny-delaunay", root, db, csv_path=tmp_path / "g.csv", progress=False)
     assert out[0]["score"] == 50 and not out[0].get("skipped")
-    assert "1 submissions judged again: the problem's tests or points changed" in capsys.readouterr().err
+    err = capsys.readouterr().err
+    assert "1 submissions judged again: the problem's tests, checker, limits or points changed" in err
+    assert "ada: 100 -> 50; tiny: points 100 -> 50" in err  # the diff: no test changed, none judged again
     row = next(csv.DictReader(open(tmp_path / "g.csv")))
-    assert row["score"] == "50.0" and "judged again" in row["note"]
+    assert row["score"] == "50.0" and "judged again: tiny (points 100 -> 50)" in row["note"]
+    runs = sqlite3.connect(db).execute("SELECT COUNT(*), COUNT(DISTINCT judged_at) FROM results").fetchone()
+    assert runs[0] == 6 and runs[1] == 3  # 3 tests, each judged once: the second key's rows are copies
     # the scoreboard counts that file once
     board = scoreboard.compute(ResultStore(db))
     assert board[0]["problems"]["tiny-delaunay"]["tries"] == 1

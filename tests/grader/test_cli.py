@@ -36,6 +36,27 @@ def test_list_shows_time_memory_and_points():
     assert text[0].split()[:5] == ["id", "entry", "time", "memory", "points"]
 
 
+def test_list_shows_the_cpp_limit_and_flags_once():
+    """A column per compiled language (its own time limit, course.yaml ``time_limits``) after the
+    columns scripts read; the compile command once, on stderr, read from ``languages.CPP``."""
+    from grader.judging.languages import CPP
+
+    r = grader("list", "--json")
+    rows = {row["id"]: row for row in json.loads(r.stdout)}
+    for p in list_problems():
+        assert rows[p.id]["time_limit_cpp"] == f"{p.time_limit_for('cpp'):g}s"
+    r = grader("list")
+    lines = r.stdout.splitlines()
+    assert lines[0].split()[:7] == ["id", "entry", "time", "memory", "points", "cpp", "title"]
+    problems = list_problems()
+    assert len(lines) == 1 + len(problems)  # stdout is the table alone
+    for line, p in zip(lines[1:], problems):
+        assert line.split()[:6] == [p.id, p.entry, f"{p.time_limit:g}s", f"{p.memory_mb}MB", str(p.points),
+                                    f"{p.time_limit_for('cpp'):g}s"] and line.endswith(p.title)
+    command = " ".join(CPP.compile_command("main.cpp", "main"))
+    assert r.stderr.count(command) == 1 and "-std=gnu++17" in command
+
+
 @pytest.mark.parametrize("args", [["list"], ["scoreboard", "--db", "{store}"], ["judge", "delaunay", "--help"]])
 def test_a_closed_pipe_ends_quietly(tmp_path, args):
     """`python -m grader list | head -0`: the reader is gone before anything is written."""

@@ -133,10 +133,12 @@ def test_progress_counts_tests_and_resumed_results(tmp_path, fixture_problems, c
     from grader.classroom.store import ResultStore
     from grader.judging.verdicts import TestResult, Verdict
 
+    from grader.classroom.regrade import fingerprints, version
     from grader.problems import load_problem
 
     store = ResultStore(db)  # as if a killed batch had stored ada's first test
-    ada = next(j for j in discover(root, fixture_problems, store, load_problem(fixture_problems).digest())
+    key = version(fingerprints(load_problem(fixture_problems)))
+    ada = next(j for j in discover(root, fixture_problems, store, key)
                if j.student == "ada")
     store.begin("ada", fixture_problems, ada.path, ada.sha, ada.submitted_at)
     store.add_test("ada", fixture_problems, ada.sha, TestResult("tiny/1-tutorial", "tiny", Verdict.AC, 0.01, 30.0))

@@ -9,10 +9,20 @@ too-slow solution times out), i.e. ``--groups <first>,<last>:1``. Problems are d
 ones are covered when they arrive; the exports and verifyproblem runs go through a pool of 2
 processes.
 
+The C++ reference solutions (``expected_cpp.yaml``) are exported beside the Python ones, so
+verifyproblem compiles them with its own flags and runs them: ``accepted.cpp`` must score every
+exported group, as our expected verdict says. With these groups the other C++ files are left out
+(``wrong_double.cpp`` fails only ``degenerate``, ``quadratic.cpp``'s TLE is not judged under the
+package's Python limit before the judge takes ``.cpp``, a compile error never goes in): one more
+compile and a few fast runs per problem, so C++ is exported for every problem that has it.
+Where each C++ file goes for other groups is tested without problemtools below.
+
 Measured 2026-12-01 with the 2 problems then in the checkout (``/usr/bin/time -v`` around
 this file): 90 s of CPU (user + system, verifyproblem and sandboxes included), 5.5 min of wall
 time on a machine with load average 11 on 2 cores. About 45 s of CPU per problem: 12 problems
-need about 9 min of CPU, 4.5 min of wall time on 2 otherwise idle cores.
+need about 9 min of CPU, 4.5 min of wall time on 2 otherwise idle cores. Measured 2026-12-06 with
+the 12 problems and the 9 C++ accepted solutions in their packages: 602 s of CPU (552 user + 51
+system), 47 min of wall time under a load average of 13-14 on 2 cores; 0 errors in every package.
 
 Run: .venv/bin/python -m pytest tests/grader/test_kattis.py -q
 """
@@ -28,7 +38,8 @@ from pathlib import Path
 import pytest
 
 from grader.contest.judge import Judge
-from grader.contest.kattis import LANGUAGES_YAML, expected_verdicts, export, group_dirname, scored_groups, selection, shortname
+from grader.contest.kattis import (LANGUAGES_YAML, cpp_placements, expected_cpp, expected_verdicts, export, group_dirname,
+                                   scored_groups, selection, shortname)
 from grader.problems import REPO, list_problems, load_problem
 
 VERIFY = Path(sys.executable).with_name("verifyproblem")
@@ -50,7 +61,7 @@ def results_table(out: str) -> dict[str, dict[str, str]]:
     rows = {}
     for ln in lines[start + 2:]:
         cells = ln.split()
-        if len(cells) != len(head) or not cells[0].endswith(".py"):
+        if len(cells) != len(head) or not cells[0].endswith((".py", ".cpp")):
             break
         rows[cells[0]] = dict(zip(head, cells))
     return rows
@@ -75,6 +86,9 @@ def verify_one(problem_id: str, tmp: str) -> dict:
             src = (REPO / "solutions" / problem_id / name).resolve()
             r = Judge(exported, hide=[str(src.parent)]).judge_path(src)
             ours[name] = {group_dirname(problem, g): (p if r.group_passed(g) else 0) for g, p in r.group_points.items()}
+    for name, (verdict, _failing) in expected_cpp(problem_id).items():
+        if verdict == "AC":  # every exported group, full points (the judge does not take .cpp yet)
+            ours[name] = {group_dirname(problem, g.name): g.points for g in exported.groups}
     subs = {d.name: sorted(f.name for f in d.iterdir()) for d in (dest / "submissions").iterdir()}
     return {"out": proc.stdout + proc.stderr, "ours": ours, "dest": str(dest), "subs": subs}
 
@@ -99,6 +113,8 @@ def test_verifyproblem_accepts_every_problem_with_its_groups(tmp_path):
         slow_wrong = re.findall(r"ERROR wrong_answer/\S+ .* got TLE", out)
         assert errors and int(errors.group(1)) == len(slow_wrong), (pid, out[-4000:])
         assert "accepted" in res["subs"], (pid, res["subs"])
+        cpp_ac = {n for n, (v, _) in expected_cpp(pid).items() if v == "AC"}
+        assert cpp_ac <= set(res["subs"]["accepted"]), (pid, res["subs"])  # C++ is in the package
         table = results_table(out)
         for name, per_group in res["ours"].items():
             row = table[name]
@@ -128,3 +144,71 @@ def test_export_writes_scored_groups(tmp_path):
     assert yaml.safe_load((dest / "problem.yaml").read_text())["type"] == "scoring"
     with pytest.raises(ValueError, match="positive integer"):
         export("delaunay", tmp_path, groups=["large:0"])
+
+
+def test_cpp_submissions_go_where_their_expected_verdict_holds(tmp_path, capsys):
+    """Without problemtools: C++ files are placed from ``expected_cpp.yaml`` for the exported groups
+    (the judge does not take ``.cpp`` yet, and a WA does not depend on the time limit); a TLE is
+    never placed unjudged; a compile error never goes in; the package's README says what is left out."""
+    assert expected_cpp("delaunay")["wrong_double.cpp"] == ("WA", ["degenerate"])
+    dest = export("delaunay", tmp_path, judge=False)  # every group
+    subs = {f.name: f.parent.name for f in (dest / "submissions").rglob("*.cpp")}
+    assert subs == {"accepted.cpp": "accepted", "wrong_double.cpp": "partially_accepted"}
+    readme = (dest / "README.md").read_text()
+    assert "`quadratic.cpp`: its TLE" in readme and "`compile_error.cpp`: a compile error" in readme
+    assert "6 s per test" in readme and "quadratic.cpp left out" in capsys.readouterr().err
+
+    problem = load_problem("delaunay")
+    for groups, expected in ((["degenerate"], "wrong_answer"), (["tiny", "degenerate"], "partially_accepted"),
+                             (["tiny", "large:1"], None)):
+        placed, left = cpp_placements(selection(problem, scored_groups(problem, groups)), judge=False, partial=True)
+        assert placed.get("wrong_double.cpp") == expected, (groups, placed, left)
+        assert placed["accepted.cpp"] == "accepted" and "quadratic.cpp" in left and "compile_error.cpp" in left
+    # a first failure outside the export: its verdict there is unknown, so it is left out
+    placed, left = cpp_placements(selection(load_problem("edge-flip"), scored_groups(load_problem("edge-flip"), ["medium"])),
+                                  judge=False, partial=True)
+    assert "wrong_double.cpp" not in placed and "not exported" in left["wrong_double.cpp"]
+
+
+def test_cpp_expected_verdicts_are_known(monkeypatch):
+    """A verdict that names no Kattis directory is a clear error naming the problem and the file."""
+    import grader.contest.kattis as kattis
+
+    monkeypatch.setattr(kattis, "expected_cpp", lambda pid: {"accepted.cpp": ("OK", [])})
+    with pytest.raises(ValueError, match="delaunay: expected_cpp.yaml: accepted.cpp: unknown verdict 'OK'"):
+        kattis.cpp_placements(load_problem("delaunay"), judge=False)
+
+
+def test_cpp_files_are_judged_under_twice_the_package_limit_once_the_judge_takes_them(monkeypatch):
+    """Once ``.cpp`` is among the judge's languages every non-AC C++ file is judged on the exported
+    tests, under twice the package's (Python) limit, problemtools' safety margin: what passes there
+    is left out, a partial score is ``partially_accepted``, none is its first failure's directory.
+    (The judge is replaced here by one that reports given scores: the placement is what is tested.)"""
+    import grader.contest.judge as judge_module
+    import grader.judging.languages as languages
+    from grader.judging.verdicts import JudgeResult, TestResult
+
+    monkeypatch.setattr(languages, "language_of", lambda path: languages.CPP)
+    problem = load_problem("delaunay")
+    exported = selection(problem, scored_groups(problem, ["tiny", "large:1"]))
+    outcome = {"wrong_double.cpp": ("WA", ["tiny"]), "quadratic.cpp": ("TLE", ["large"]), "compile_error.cpp": None}
+    limits = []
+
+    class FakeJudge:
+        def __init__(self, p, hide=()):
+            limits.append(p.time_limit_for("cpp"))
+
+        def judge_path(self, src):
+            verdict, failing = outcome[Path(src).name]
+            tests = [TestResult(f"{g}/01", g, verdict if g in failing else "AC", 0.1) for g in ("tiny", "large")]
+            return JudgeResult("delaunay", str(src), tests, {"tiny": 15, "large": 30})
+
+    monkeypatch.setattr(judge_module, "Judge", FakeJudge)
+    placed, left = cpp_placements(exported, judge=True, partial=True)
+    assert placed == {"accepted.cpp": "accepted", "wrong_double.cpp": "partially_accepted",
+                      "quadratic.cpp": "partially_accepted"}, (placed, left)
+    assert limits == [2 * problem.time_limit] * 2 and "compile_error.cpp" in left
+    outcome["quadratic.cpp"] = ("TLE", [])  # passes every exported group under 12 s: left out
+    outcome["wrong_double.cpp"] = ("WA", ["tiny", "large"])
+    placed, left = cpp_placements(exported, judge=True, partial=True)
+    assert placed["wrong_double.cpp"] == "wrong_answer" and "2 times the package's time limit" in left["quadratic.cpp"]

@@ -15,8 +15,9 @@ import sys
 
 import pytest
 
+from grader.judging.languages import CPP
 from grader.problems import statements
-from grader.problems import REPO, Problem, list_problems
+from grader.problems import ALWAYS_FORBIDDEN, REPO, Problem, list_problems
 
 PROBLEMS = list_problems(REPO / "assignments")
 
@@ -37,6 +38,27 @@ def test_block_states_the_limits_and_every_group(problem: Problem):
     for g in problem.groups:
         assert re.search(rf"^\| {re.escape(g.name)} \| {g.points} \| \d+ \|", block, re.M), (g.name, block)
     assert f"({sum(g.points for g in problem.groups)} points in all)" in block
+    # the C++ reader's part: both limits (course.yaml time_limits), the judge's own compile command
+    assert (f"{problem.time_limit_for('python'):g} s of CPU time per test for Python, "
+            f"{problem.time_limit_for('cpp'):g} s for C++") in block
+    assert "## Submitting in C++" in block and f"`{' '.join(CPP.compile_command('main.cpp', 'main'))}`" in block
+    assert ("any algorithm" in block) == bool(set(problem.forbidden) - set(ALWAYS_FORBIDDEN)), problem.id
+
+
+def test_cpp_section_is_shared_and_follows_the_language_entry(monkeypatch):
+    """One text for every problem (apart from the paragraph on forbidden libraries), and the flags
+    are read from ``languages.CPP``: a changed entry changes every statement's block."""
+    import dataclasses
+
+    from grader.judging import languages
+
+    sections = {tuple(statements.cpp_section(p)) for p in PROBLEMS}
+    assert len(sections) <= 2
+    shortest = min(sections, key=len)
+    assert all(s[:len(shortest)] == shortest for s in sections)
+    other = dataclasses.replace(languages.CPP, compile=("clang++", "-O3", "-o", "{binary}", "{source}"))
+    monkeypatch.setattr(statements, "CPP", other)
+    assert "`clang++ -O3 -o main main.cpp`" in "\n".join(statements.cpp_section(PROBLEMS[0]))
 
 
 def _copy(tmp_path, pid: str = "delaunay"):
@@ -54,7 +76,11 @@ def test_check_finds_stale_and_missing_markers_and_rewrite_fixes(tmp_path, monke
     stale = statements.update_statements(check=True)
     assert len(stale) == 1 and "stale" in stale[0][1]
     assert statements.update_statements() and statements.update_statements(check=True) == []
-    assert "7 s of CPU time per test" in statements.statement_path(p).read_text()
+    assert "7 s of CPU time per test for Python, 7 s for C++" in statements.statement_path(p).read_text()
+    course = p.path / "course.yaml"
+    course.write_text(course.read_text() + "time_limits: {cpp: 1.5}\n")
+    assert statements.update_statements(check=True) and statements.update_statements()
+    assert "7 s of CPU time per test for Python, 1.5 s for C++" in statements.statement_path(p).read_text()
     path = statements.statement_path(p)
     path.write_text(path.read_text().replace(statements.END, ""))
     r = subprocess.run([sys.executable, "-m", "grader", "statements", "--check", "delaunay"], cwd=REPO,

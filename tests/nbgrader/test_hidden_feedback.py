@@ -12,6 +12,9 @@ feedback's own frame holds, such as points, are left out: they cannot be told fr
 * submissions judged in the sandbox that raise with their inputs encoded in every way
   (``repr``, hex floats, JSON, base64, a class named after them, their own source file rewritten
   so that the traceback line shows the data) and print them.
+
+Both under every feedback level a hidden group may have (``course.yaml`` ``feedback``,
+:mod:`grader.judging.feedback_policy`); a level that shows test data is refused for a hidden group.
 """
 
 from __future__ import annotations
@@ -21,6 +24,8 @@ import functools
 import json
 import textwrap
 
+import contextlib
+
 import nbformat
 import pytest
 
@@ -29,6 +34,7 @@ from grader.contest.judge import Judge
 from grader.contest.kattis import selection
 from grader.course.nbgrader_autograde import group_output, write_results
 from grader.problems import REPO, list_problems, load_problem
+from grader.judging.feedback_policy import LEVELS, resolve
 from grader.judging.submissions import Submission
 from grader.judging.verdicts import JudgeResult, TestResult, Verdict
 
@@ -37,6 +43,9 @@ PROBLEMS = sorted(p.id for p in list_problems())
 #: counts, which the search cannot tell from the feedback's frame)
 QUOTES_COORDINATES = {"delaunay-3d", "largest-empty-circle", "navmesh", "obstacle-clearance", "voronoi"}
 
+
+#: every level a hidden group may have
+HIDDEN_LEVELS = sorted(name for name, level in LEVELS.items() if level.hidden_ok)
 
 SMALL_LINES = 2000  #: larger tests are left out: messages do not depend on size, and the checks stay quick
 
@@ -89,13 +98,25 @@ def _notebook_text(pid: str) -> str:
     return (REPO / "assignments" / "source" / pid / f"{pid}.ipynb").read_text()
 
 
+@contextlib.contextmanager
+def policy(problem, level: str):
+    """``problem`` with every group at feedback ``level`` (as its course.yaml would set it)."""
+    saved = problem.feedback
+    problem.feedback = resolve(problem.id, {"hidden": level}, {g.name: g.public for g in problem.groups})
+    try:
+        yield problem
+    finally:
+        problem.feedback = saved
+
+
 def notebook_feedback(problem, result: JudgeResult) -> str:
     """The test-cell outputs of the problem's notebook with ``result`` written in, scored groups only."""
     nb = nbformat.reads(_notebook_text(problem.id), as_version=4)
     scored = {g.name for g in problem.groups if g.points > 0}
     text = feedback_text(write_results(nb, problem, result))
     # the check cell's sample table is public by design; the rest must hold nothing hidden
-    groups = [group_output(result, g.name, g.points) for g in problem.groups if g.name in scored]
+    groups = [group_output(result, g.name, g.points, problem.feedback_level(g.name))
+              for g in problem.groups if g.name in scored]
     return text + "\n" + "\n".join(feedback_text(nbformat.from_dict({"cells": [{"outputs": [o]}]})) for o in groups)
 
 
@@ -145,11 +166,14 @@ def test_checker_failure_messages_never_reach_hidden_feedback(pid):
     assert {str(r.verdict) for r in results} >= {"WA", "PE"} or pid == "dynamic-network", "the answers must fail"
     if pid in QUOTES_COORDINATES:  # the details quote the test, so the search below would find a leak
         assert any(leaks(problem, r.message, "") for r in results), [r.message[:100] for r in results[:5]]
-    # one result per test and message: each is put in its group's cell in turn
-    for r in results:
-        result = JudgeResult(problem.id, "x", [r], problem.group_points)
-        feedback = notebook_feedback(problem, result)
-        assert leaks(problem, feedback, frame_of(problem, result)) == [], (r.message[:200], r.hidden_message)
+    # one result per test and message: each is put in its group's cell in turn, at every level
+    for level in HIDDEN_LEVELS:
+        with policy(problem, level):
+            for r in results:
+                result = JudgeResult(problem.id, "x", [r], problem.group_points)
+                feedback = notebook_feedback(problem, result)
+                assert leaks(problem, feedback, frame_of(problem, result)) == [], (level, r.message[:200],
+                                                                                   r.hidden_message)
 
 
 LEAKY = '''
@@ -197,8 +221,46 @@ def test_submission_that_encodes_its_inputs_leaks_nothing(pid, entry, mode):
         assert "your own class" in failing[0].hidden_message or mode != "class_name"
     # the detail has the data (so the test would see a leak), the hidden feedback does not
     assert leaks(problem, "\n".join(t.message for t in failing), "") != [] or mode == "class_name"
-    feedback = notebook_feedback(problem, result)
-    assert leaks(problem, feedback, frame_of(problem, result)) == [], feedback[:2000]
+    for level in HIDDEN_LEVELS:
+        with policy(problem, level):
+            feedback = notebook_feedback(problem, result)
+            assert leaks(problem, feedback, frame_of(problem, result)) == [], (level, feedback[:2000])
+
+
+def test_levels_that_show_data_are_refused_on_hidden_groups():
+    groups = {g.name: g.public for g in load_problem("delaunay").groups}
+    shows_data = [name for name, level in LEVELS.items() if not level.hidden_ok]
+    assert shows_data
+    for level in shows_data:
+        with pytest.raises(ValueError, match="shows test data: group 'large' is hidden"):
+            resolve("delaunay", {"groups": {"large": level}}, groups)
+        with pytest.raises(ValueError, match="shows test data"):
+            resolve("delaunay", {"hidden": level}, groups)
+    with pytest.raises(ValueError, match="unknown level 'everything'"):
+        resolve("delaunay", {"public": "everything"}, groups)
+    with pytest.raises(ValueError, match="unknown group"):
+        resolve("delaunay", {"groups": {"nope": "verdict"}}, groups)
+
+
+def test_levels_on_a_public_group_and_a_hidden_one():
+    """``input`` puts the failing sample's input in the check cell; ``verdict`` drops the messages."""
+    problem = load_problem("delaunay")
+    sample = next(t for t in problem.tests() if t.group == "sample")
+    hidden = next(g for g in problem.groups if g.points > 0)
+    bad = TestResult(sample.name, "sample", Verdict.WA, 0.1, 1.0, "triangle 0 is not Delaunay", sample.input_text[:200])
+    hid = TestResult(f"{hidden.name}/01", hidden.name, Verdict.WA, 0.1, 1.0, "point (0.25, 3.5) is inside",
+                     "", "a point lies inside a triangle's circumcircle")
+    result = JudgeResult(problem.id, "x", [bad, hid], problem.group_points)
+    texts = {}
+    for raw in ({}, {"public": "input"}, {"public": "verdict", "hidden": "verdict"}):
+        problem.feedback = resolve(problem.id, raw, {g.name: g.public for g in problem.groups})
+        texts[str(raw)] = notebook_feedback(problem, result)
+    default, shown, terse = texts.values()
+    first_line = sample.input_text.splitlines()[1]
+    assert "triangle 0 is not Delaunay" in default and first_line not in default.split("samples, as judged")[1]
+    assert "input:" in shown and first_line in shown
+    assert "a point lies inside" in default and "a point lies inside" not in terse
+    assert "triangle 0 is not Delaunay" not in terse and "0.25" not in default + shown + terse
 
 
 def test_needles_include_every_form():
