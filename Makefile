@@ -29,9 +29,12 @@ $(LAB_OVERRIDES): $(STAMP) deploy/lab-overrides.json
 	cp deploy/lab-overrides.json $(LAB_OVERRIDES)
 
 # Compile every numba kernel into numba's cache (a few seconds when nothing changed), so that
-# no lesson, problem or test waits for a compile; see reference_impl/warmup.py.
+# no lesson, problem or test waits for a compile; see reference_impl/warmup.py. Then generate every
+# problem's hidden tests into the grader's cache (.cache/grader; kept while the packages do not
+# change), so that no judging waits for them; see grader/problems/cache.py.
 warm: setup
 	$(PY) -m reference_impl warm
+	$(PY) -m grader warm
 
 demo: warm
 	$(PY) -m reference_impl demo

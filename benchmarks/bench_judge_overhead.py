@@ -53,7 +53,13 @@ not counted in the ratio (none yet: no accepted ``.cpp`` exists).
 Run (as root or as an ordinary user; the worktree's code via PYTHONPATH):
     PYTHONPATH=$PWD .venv/bin/python benchmarks/bench_judge_overhead.py [--students 3]
         [--problems delaunay emst] [--languages python] [--repeat 3] [--quick] [--json out.json]
-        [--method auto|cgroup-v1|cgroup-v2|proc]
+        [--method auto|cgroup-v1|cgroup-v2|proc] [--startup-only]
+
+``--startup-only`` prints only the start-up table, with two more rows: ``python -m grader judge``
+of a submission with a syntax error (``CE`` before any test runs: the command's whole start-up,
+problem and tests loaded, no jail) and the notebooks' sample check as its first call in a fresh
+process (``judge_samples`` alone: what the verdict table waits for; then with ``picture_png``, of
+the delaunay accepted solution; its target is wall time: under 1 s on a quiet machine).
 
 Example (an excerpt of the full run; all of it is in benchmarks/README.md):
     cpu method: cgroup-v1 cpuacct (a fresh group around each command; the jail's groups below it)
@@ -95,6 +101,11 @@ sys.path.insert(0, str(REPO))
 from grader import list_problems, load_problem  # noqa: E402
 
 CLK_TCK = os.sysconf("SC_CLK_TCK")
+# the notebooks' sample check (%check_samples) as its first call in a fresh kernel: judge the samples
+# in the jail, then draw the picture (argv[1]: a submission; a notebook is judged the same way)
+SAMPLE_CHECK = ("import sys; from pathlib import Path; from grader.contest.sample_check import judge_samples, picture_png; "
+                "r, p = judge_samples('delaunay', Path(sys.argv[1])); assert r.verdict == 'AC', r.verdict; "
+                "assert picture_png(p, r)")
 QUICK_PROBLEMS = ("closest-pair", "largest-empty-circle")
 TRIVIAL = "def delaunay(points):\n    return []  # every test is collinear: no triangle is the right answer\n"
 
@@ -362,9 +373,13 @@ def child_env(extra: dict[str, str] | None = None) -> dict[str, str]:
     return env
 
 
-def best(meter: Meter, cmd: list[str], repeat: int, env: dict[str, str] | None = None) -> dict[str, float]:
-    """Median and min CPU and median wall of ``repeat`` runs of ``cmd``."""
-    runs = [meter.run(cmd, env or child_env()).ok() for _ in range(repeat)]
+def best(meter: Meter, cmd: list[str], repeat: int, env: dict[str, str] | None = None,
+         expect_rc: int = 0) -> dict[str, float]:
+    """Median and min CPU and median wall of ``repeat`` runs of ``cmd`` (each must exit ``expect_rc``)."""
+    runs = [meter.run(cmd, env or child_env()) for _ in range(repeat)]
+    for r in runs:
+        if r.rc != expect_rc:
+            raise SystemExit(f"{' '.join(cmd)} exited {r.rc}, not {expect_rc}:\n{r.stderr[-3000:]}")
     return {"cpu_median": statistics.median(r.cpu for r in runs), "cpu_min": min(r.cpu for r in runs),
             "wall_median": statistics.median(r.wall for r in runs)}
 
@@ -550,6 +565,27 @@ def import_cost(meter: Meter, path: Path, repeat: int) -> float:
     return best(meter, run, repeat, env)["cpu_median"] - best(meter, bare, repeat, env)["cpu_median"]
 
 
+def print_startup(startup: dict[str, dict[str, float]], loads: dict[str, float], yaml_cpu: dict[str, Any],
+                  judge30: dict[str, float] | None, repeat: int, e30: str = "") -> None:
+    """The start-up table (and, with ``judge30``, the whole 30-test judge command's row)."""
+    print("== start-up of one judge command (CPU s, median of", repeat, "runs; measured) ==")
+    srows = [[k, "", "", fmt(v["cpu_median"]), fmt(v["cpu_min"]), fmt(v["wall_median"], 2)] for k, v in startup.items()]
+    srows.append(["load_problem(id), in-process, per problem", "", "",
+                  fmt(statistics.median(loads.values())), fmt(min(loads.values())), "-"])
+    if judge30 is not None:
+        srows.append([f"python -m grader judge ({e30}, 30 empty-work tests)", "", "", fmt(judge30["cpu_median"]),
+                      fmt(judge30["cpu_min"]), fmt(judge30["wall_median"], 2)])
+    print(table(["command", "", "", "cpu s", "min s", "wall s"], srows))
+    if judge30 is not None:
+        print(f"  the 30-test judge: the submission's own time {judge30['own_median']:.3f} s, so the judge's overhead "
+              f"is {judge30['cpu_median'] - judge30['own_median']:.3f} s (the course's target: under 1.5 s of judge "
+              "overhead for 30 function-mode tests)")
+    print("  load_problem per problem: " + ", ".join(f"{k} {v:.3f}" for k, v in loads.items()))
+    print(f"  parsing the {len(loads)} course.yaml files alone (in-process): {yaml_cpu['safe_load']:.3f} s with "
+          f"yaml.safe_load (pure Python), {yaml_cpu['csafe_load']:.3f} s with libyaml's CSafeLoader "
+          f"(same data: {yaml_cpu['same']})")
+
+
 # -- output ----------------------------------------------------------------------------------------
 def fmt(x: float | None, nd: int = 3) -> str:
     return "-" if x is None else f"{x:.{nd}f}"
@@ -576,6 +612,8 @@ def main(argv: list[str] | None = None) -> dict[str, Any]:
     ap.add_argument("--method", default="auto", choices=["auto", "cgroup-v1", "cgroup-v2", "proc"])
     ap.add_argument("--quick", action="store_true", help=f"{', '.join(QUICK_PROBLEMS)}; 2 students; --repeat 1")
     ap.add_argument("--json", type=Path, help="also write every number here (JSON)")
+    ap.add_argument("--startup-only", action="store_true",
+                    help="only the start-up table (one judge command's start-up, the sample check); no classes")
     ap.add_argument("--replay-one", metavar="PROBLEM", help=argparse.SUPPRESS)  # replay()'s fresh process
     a = ap.parse_args(argv)
     if a.replay_one:
@@ -598,7 +636,7 @@ def main(argv: list[str] | None = None) -> dict[str, Any]:
     try:
         # 1. tests generated once (cached by the grader; never part of a grade run measured below)
         gen = {}
-        for pid in problems:
+        for pid in (["delaunay"] if a.startup_only else problems):  # the start-up rows judge delaunay
             c0 = time.process_time()
             gen[pid] = len(load_problem(pid).tests())
             gen_cpu = time.process_time() - c0
@@ -611,8 +649,18 @@ def main(argv: list[str] | None = None) -> dict[str, Any]:
             "python -c pass": best(meter, [py, "-c", "pass"], a.repeat),
             "python -I -c pass (the child's interpreter)": best(meter, [py, "-I", "-c", "pass"], a.repeat),
             "python -c 'import grader'": best(meter, [py, "-c", "import grader"], a.repeat),
+            "python -m grader --help": best(meter, [py, "-m", "grader", "--help"], a.repeat),
             "python -m grader list": best(meter, [py, "-m", "grader", "list"], a.repeat),
         }
+        syntax_error = tmp / "syntax_error.py"
+        syntax_error.write_text("def delaunay(points):\n    return [\n")
+        startup["python -m grader judge delaunay (a syntax error: CE before any test runs)"] = best(
+            meter, [py, "-m", "grader", "judge", "delaunay", str(syntax_error)], a.repeat, expect_rc=1)
+        startup["sample check: judge_samples alone (the verdict table), fresh python"] = best(
+            meter, [py, "-c", SAMPLE_CHECK.split("; assert picture_png")[0],
+                    str(accepted_solution("delaunay", LANGUAGES["python"]))], a.repeat)
+        startup["sample check: judge_samples + picture, delaunay accepted (fresh python)"] = best(
+            meter, [py, "-c", SAMPLE_CHECK, str(accepted_solution("delaunay", LANGUAGES["python"]))], a.repeat)
         yaml_cpu = course_yaml_cost(problems, a.repeat)
         loads = {}
         for pid in problems:
@@ -622,6 +670,15 @@ def main(argv: list[str] | None = None) -> dict[str, Any]:
                 load_problem(pid)
                 cpus.append(time.process_time() - c0)
             loads[pid] = statistics.median(cpus)
+
+        if a.startup_only:
+            print_startup(startup, loads, yaml_cpu, None, a.repeat)
+            out.update(startup=startup, load_problem=loads, course_yaml=yaml_cpu)
+            load1 = os.getloadavg()
+            print(f"\nload average at the end: {load1[0]:.1f} {load1[1]:.1f} {load1[2]:.1f}")
+            if a.json:
+                a.json.write_text(json.dumps(out, indent=1, default=str))
+            return out
 
         # 3. empty-work classes: fixed cost of a submission and of a test
         eroot = tmp / "problems"
@@ -643,23 +700,11 @@ def main(argv: list[str] | None = None) -> dict[str, Any]:
             if j.rc != 0:
                 j.ok()
         judge_own = [sum(t["time_s"] for t in json.loads(j.stdout)["tests"]) for j in judges]
-        judge30 = {"cpu_median": statistics.median(j.cpu for j in judges),
+        judge30 = {"cpu_median": statistics.median(j.cpu for j in judges), "cpu_min": min(j.cpu for j in judges),
                    "own_median": statistics.median(judge_own),
                    "wall_median": statistics.median(j.wall for j in judges)}
 
-        print("== start-up of one judge command (CPU s, median of", a.repeat, "runs; measured) ==")
-        srows = [[k, "", "", fmt(v["cpu_median"]), fmt(v["cpu_min"]), fmt(v["wall_median"], 2)] for k, v in startup.items()]
-        srows.append(["load_problem(id), in-process, per problem", "", "",
-                      fmt(statistics.median(loads.values())), fmt(min(loads.values())), "-"])
-        srows.append([f"python -m grader judge ({e30}, 30 empty-work tests)", "", "", fmt(judge30["cpu_median"]),
-                      fmt(min(j.cpu for j in judges)), fmt(judge30["wall_median"], 2)])
-        print(table(["command", "", "", "cpu s", "min s", "wall s"], srows))
-        print(f"  the 30-test judge: the submission's own time {judge30['own_median']:.3f} s, so the judge's overhead "
-              f"is {judge30['cpu_median'] - judge30['own_median']:.3f} s (the course's target: under 1.5 s of judge overhead for 30 function-mode tests)")
-        print("  load_problem per problem: " + ", ".join(f"{k} {v:.3f}" for k, v in loads.items()))
-        print(f"  parsing the {len(problems)} course.yaml files alone (in-process): {yaml_cpu['safe_load']:.3f} s with "
-              f"yaml.safe_load (pure Python), {yaml_cpu['csafe_load']:.3f} s with libyaml's CSafeLoader "
-              f"(same data: {yaml_cpu['same']})")
+        print_startup(startup, loads, yaml_cpu, judge30, a.repeat, e30)
         print(f"\n== empty-work classes ({empty_students} students; 'def delaunay(points): return []', every test AC) ==")
         erows = [[eid, "python", f"{len(run.students)} st", fmt(run.startup), fmt(steady[eid]),
                   fmt(statistics.mean(r.own for r in later(run.students)), 4), fmt(run.cpu), fmt(run.wall, 2)]

@@ -12,8 +12,31 @@ Example:
     'AC'
 """
 
-from .contest.judge import Judge, judge_file
-from .problems import Problem, list_problems, load_problem
-from .judging.verdicts import JudgeResult, TestResult, Verdict
+from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:  # the names below are imported on first use: ``import grader`` stays light
+    from .contest.judge import Judge, judge_file
+    from .judging.verdicts import JudgeResult, TestResult, Verdict
+    from .problems import Problem, list_problems, load_problem
+
+_WHERE = {"Judge": ".contest.judge", "judge_file": ".contest.judge", "Problem": ".problems",
+          "list_problems": ".problems", "load_problem": ".problems", "JudgeResult": ".judging.verdicts",
+          "TestResult": ".judging.verdicts", "Verdict": ".judging.verdicts"}
 
 __all__ = ["Judge", "judge_file", "Problem", "list_problems", "load_problem", "JudgeResult", "TestResult", "Verdict"]
+
+
+def __getattr__(name: str) -> Any:
+    """The public names, imported when first used (a command that lists problems never loads the jail)."""
+    if name not in _WHERE:
+        raise AttributeError(f"module 'grader' has no attribute {name!r}")
+    value = getattr(importlib.import_module(_WHERE[name], __name__), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted({*globals(), *__all__})

@@ -18,6 +18,7 @@
     python -m grader validate PROBLEM
     python -m grader statements [--check] [PROBLEM...]
     python -m grader stress PROBLEM FILE [--seconds N]
+    python -m grader warm [PROBLEM...]
 
 Exit status (for scripts and the CI of students' own repositories):
     0  success; for ``judge`` and ``timed submit``: the verdict is AC
@@ -36,19 +37,23 @@ import json
 import os
 import sys
 from pathlib import Path
+from typing import TYPE_CHECKING
 
-from .classroom import scoreboard as sb
-from .classroom import timed
-from .jail import JailUnavailable, mechanism
-from .contest.judge import Judge
 from .problems import list_problems, load_problem
-from .classroom.store import ResultStore
 from .judging.languages import CPP, LANGUAGES, PYTHON, Language
-from .judging.verdicts import format_table
+
+if TYPE_CHECKING:
+    from .classroom.store import ResultStore
+
+# Each command imports what it uses when it runs: `list` and `--help` never load the jail, the
+# judging loop, SQLite or the class tools (tests/grader/test_startup.py checks which modules a
+# light command leaves out).
 
 
 def _existing_store(path: str) -> ResultStore:
     """Open a results store that must already exist (a mistyped ``--db`` is an error, not a new file)."""
+    from .classroom.store import ResultStore
+
     if not Path(path).is_file():
         raise ValueError(f"no results store at {path} (check --db; it is created by `grade` or `timed start`)")
     return ResultStore(path)
@@ -82,6 +87,9 @@ def _cmd_list(a: argparse.Namespace) -> int:
 
 
 def _cmd_judge(a: argparse.Namespace) -> int:
+    from .contest.judge import Judge
+    from .judging.verdicts import format_table
+
     path = Path(a.file)
     if not path.is_file():
         raise ValueError(f"submission file {path} does not exist")
@@ -97,6 +105,8 @@ def _cmd_judge(a: argparse.Namespace) -> int:
 
 def judged_in() -> str:
     """Which jail judged (the table's last line; ``--json`` has it as ``sandbox``)."""
+    from .jail import mechanism
+
     mech = mechanism()
     if mech == "trusted":
         return "judged in the trusted mode: NO kernel jail (for your own code only; see python -m grader.sandbox)"
@@ -221,6 +231,10 @@ def _similarity_options(p: argparse.ArgumentParser) -> None:
 
 
 def _cmd_timed(a: argparse.Namespace) -> int:
+    from .classroom import timed
+    from .classroom.store import ResultStore
+    from .judging.verdicts import format_table
+
     if a.action == "start":
         timed._settings(a.problem)  # refuse a problem without timed settings before creating a store
     store = ResultStore(a.db) if a.action == "start" else _existing_store(a.db)
@@ -246,6 +260,8 @@ def _cmd_timed(a: argparse.Namespace) -> int:
 
 
 def _cmd_scoreboard(a: argparse.Namespace) -> int:
+    from .classroom import scoreboard as sb
+
     store = _existing_store(a.db)
     rows = sb.compute(store, sb.parse_start(a.start), a.problems.split(",") if a.problems else None)
     store.close()
@@ -269,6 +285,13 @@ def _cmd_validate(a: argparse.Namespace) -> int:
         print(f"{p.id}: {e}")
     print(f"{p.id}: {len(p.tests())} tests, {'OK' if not errors else f'{len(errors)} problems'}")
     return 1 if errors else 0
+
+
+def _cmd_warm(a: argparse.Namespace) -> int:
+    from .problems.package import warm
+
+    warm(a.problems or None, sys.stdout)
+    return 0
 
 
 def _cmd_statements(a: argparse.Namespace) -> int:
@@ -384,6 +407,12 @@ def build_parser() -> argparse.ArgumentParser:
     p = sub.add_parser("validate", help="check a problem package and its test inputs")
     p.add_argument("problem")
     p.set_defaults(func=_cmd_validate)
+    p = sub.add_parser("warm", help="generate every problem's tests into the cache (make warm does it)",
+                       description="Generate the hidden tests of every problem (or of PROBLEM...) into the test "
+                                   "cache, so that no judging waits for them; a cached copy that is trusted and made "
+                                   "for this package is kept. One line per problem.")
+    p.add_argument("problems", nargs="*", help="problem ids (default: every problem)")
+    p.set_defaults(func=_cmd_warm)
     p = sub.add_parser("statements", help="write the limits-and-scoring block of each statement")
     p.add_argument("problems", nargs="*", help="problem ids (default: every problem)")
     p.add_argument("--check", action="store_true", help="only report stale statements (exit 1 if any)")
@@ -405,15 +434,20 @@ def main(argv: list[str] | None = None) -> int:
     except BrokenPipeError:  # `... | head`: the reader has gone; say nothing more
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 0
-    except JailUnavailable as exc:  # never judge without a jail unless asked (--trusted)
-        print(f"error: {exc}", file=sys.stderr)
-        return 2
-    except ValueError as exc:
-        print(f"error: {exc}", file=sys.stderr)
-        return 2
-    except OSError as exc:  # a missing or unreadable path the checks above did not name
-        print(f"error: {exc.strerror or exc}: {exc.filename or ''}".rstrip(": "), file=sys.stderr)
-        return 2
+    except Exception as exc:
+        if _jail_refusal(exc) or isinstance(exc, ValueError):  # never judge without a jail unless asked (--trusted)
+            print(f"error: {exc}", file=sys.stderr)
+            return 2
+        if isinstance(exc, OSError):  # a missing or unreadable path the checks above did not name
+            print(f"error: {exc.strerror or exc}: {exc.filename or ''}".rstrip(": "), file=sys.stderr)
+            return 2
+        raise
+
+
+def _jail_refusal(exc: BaseException) -> bool:
+    """True for :class:`grader.jail.JailUnavailable` (only a command that loaded the jail can raise it)."""
+    jail = sys.modules.get("grader.jail")
+    return jail is not None and isinstance(exc, jail.JailUnavailable)
 
 
 if __name__ == "__main__":

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The course on JupyterHub: install (as root) and optionally start the hub. Run from the checkout:
-#   sudo deploy/jupyterhub/deploy.sh install            # venv, proxy, accounts, exchange, configs
+#   sudo deploy/jupyterhub/deploy.sh install            # venv, proxy, accounts, exchange, configs, test cache
 #   sudo deploy/jupyterhub/deploy.sh start              # the hub in the foreground (Ctrl-C stops it)
 #   sudo deploy/jupyterhub/deploy.sh down               # stop a hub started by start (pid file)
 #   sudo deploy/jupyterhub/deploy.sh exchange           # only nbgrader's exchange (part of install)
@@ -142,6 +142,16 @@ EOF
     chmod -R go+rX "$COURSE_HOME/jupyter"
 }
 
+warm_tests() {  # the instructor's test cache filled now, as that account (its own ~/.cache/grader, as
+    # its server sets GRADER_CACHE): the first grading or sample check never waits for the tests
+    local instr="${HUB_INSTRUCTORS%%,*}" home
+    home="$(getent passwd "$instr" | cut -d: -f6)"
+    (cd / && runuser -u "$instr" -- env HOME="$home" PATH="$HUB_VENV/bin:/usr/bin:/bin" \
+        GRADER_PROBLEMS="$COURSE_HOME/course" GRADER_CACHE="$home/.cache/grader" \
+        NUMBA_CACHE_DIR="$home/.cache/numba" OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 \
+        "$HUB_VENV/bin/python" -m grader warm) || die "could not generate the tests into $instr's cache (see above)"
+}
+
 start() {
     export PATH="$HUB_VENV/bin:$PATH"
     export HUB_PROXY="$HERE/node/node_modules/.bin/configurable-http-proxy"
@@ -157,7 +167,7 @@ down() {
 }
 
 case "${1:-}" in
-    install) venv; proxy; accounts; course; echo "installed under $COURSE_HOME (venv $HUB_VENV)";;
+    install) venv; proxy; accounts; course; warm_tests; echo "installed under $COURSE_HOME (venv $HUB_VENV)";;
     start) start;;
     down) down;;
     exchange) exchange; echo "exchange ready: $EXCHANGE";;

@@ -50,6 +50,7 @@ import yaml
 
 from ..judging import checker_runtime
 from ..problems import REPO, Group, Problem, load_problem
+from ..problems.cache import load_yaml_text
 
 KATTIS_DIRS = {"AC": "accepted", "WA": "wrong_answer", "TLE": "time_limit_exceeded", "RE": "run_time_error",
                "PE": "wrong_answer", "MLE": "run_time_error", "SV": "run_time_error"}
@@ -68,7 +69,7 @@ def _expected(problem_id: str, name: str = "expected.yaml") -> dict[str, list[st
     f = REPO / "solutions" / problem_id / name
     if not f.is_file():
         return {}
-    data = yaml.safe_load(f.read_text()) or {}
+    data = load_yaml_text(f.read_text()) or {}
     return {str(k): str(v).split() for k, v in data.items()}
 
 
@@ -206,7 +207,7 @@ def export(problem: Problem | str, outdir: str | Path, groups: list[str] | None 
     if dest.exists():
         shutil.rmtree(dest)
     dest.mkdir(parents=True)
-    meta = yaml.safe_load((p.path / "problem.yaml").read_text()) or {}
+    meta = load_yaml_text((p.path / "problem.yaml").read_text()) or {}
     meta["type"] = "scoring"
     (dest / "problem.yaml").write_text(yaml.safe_dump(meta, sort_keys=False, allow_unicode=True))
     for d in ("statement", "input_validators", "generators"):

@@ -4,7 +4,9 @@ An IPython extension used by the course notebooks' "check on the samples" cell. 
 notebook file from disk (``<id>.ipynb`` in the kernel's working directory, or the file JupyterLab
 names in ``JPY_SESSION_NAME``), extracts its code cells exactly as ``python -m grader judge`` does
 (``grader.judging.submissions``), judges them in the sandbox on the ``sample`` group only, and shows a
-per-test table and a picture of one sample (expected vs your answer). The cell holds only magics,
+per-test table as soon as the samples are judged, then adds a picture of one sample (expected
+vs your answer) to it: the first call of a session imports matplotlib for the picture, which
+takes longer than judging the samples, so the verdicts do not wait for it. The cell holds only magics,
 which the judge drops, so it is never part of what the judge runs.
 
 ``%check_samples PROBLEM FILE`` checks another file instead (a path relative to the notebook's
@@ -160,14 +162,19 @@ def check_samples(line: str) -> None:
     notebook = other or find_notebook(problem_id)
     saved = time.strftime("%H:%M:%S", time.localtime(notebook.stat().st_mtime))
     result, problem = judge_samples(problem_id, notebook)
+    jail = html.escape(str(result.to_json().get("sandbox", "")))
+    head = f"<p>judged {html.escape(notebook.name)} as saved at {saved} (jail: {jail})</p>{table_html(result)}"
+    shown = display(HTML(head), display_id=True)  # the verdicts at once; the picture follows
     ip = get_ipython()
     # the kernel's function is this notebook's answer, not another file's
     entry_fn = ip.user_ns.get(problem.entry) if ip is not None and other is None else None
     png = picture_png(problem, result, entry_fn if callable(entry_fn) else None)
-    img = f'<img alt="sample picture" src="data:image/png;base64,{base64.b64encode(png).decode()}">' if png else ""
-    jail = html.escape(str(result.to_json().get("sandbox", "")))
-    display(HTML(f"<p>judged {html.escape(notebook.name)} as saved at {saved} (jail: {jail})</p>"
-                 f"{table_html(result)}{img}"))
+    if png:
+        img = f'<img alt="sample picture" src="data:image/png;base64,{base64.b64encode(png).decode()}">'
+        if shown is not None:
+            shown.update(HTML(head + img))
+        else:
+            display(HTML(head + img))
 
 
 def load_ipython_extension(ipython) -> None:

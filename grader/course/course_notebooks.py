@@ -28,12 +28,12 @@ import sys
 from pathlib import Path
 
 import nbformat
-import yaml
 
 from .course_markdown import notebook_markdown
 from ..problems import Group, Problem, list_problems, load_problem, problems_root  # noqa: F401 (load_problem: the doctest)
 from ..contest.sample_check import is_sample_group
 from ..judging.submissions import CODE_STUB  # noqa: F401 - the course's nbgrader_config.py imports it from here
+from ..problems.cache import load_yaml_text
 
 
 SOLUTIONS = Path(__file__).resolve().parent.parent.parent / "solutions"
@@ -69,7 +69,7 @@ def reference_solution(problem: Problem, solutions: Path = SOLUTIONS) -> Path:
     expected = solutions / problem.id / "expected.yaml"
     if not expected.is_file():
         raise ValueError(f"problem {problem.id!r}: {expected} is missing (no reference solution to put in the notebook)")
-    verdicts = yaml.safe_load(expected.read_text()) or {}
+    verdicts = load_yaml_text(expected.read_text()) or {}
     accepted = [f for f, v in verdicts.items() if str(v) == "AC"]
     if not accepted:
         raise ValueError(f"problem {problem.id!r}: {expected} names no AC solution")

@@ -31,6 +31,7 @@ from pathlib import Path
 import yaml
 
 from ..problems import REPO  # noqa: F401 - the example above uses it
+from ..problems.cache import load_yaml_text
 
 __all__ = ["public_course_yaml", "write_public_problem", "write_public_problems", "PROBLEM_PARTS"]
 
@@ -91,7 +92,7 @@ def write_public_problem(package: Path, dest: Path) -> Path:
             shutil.copytree(src, dest / part, ignore=IGNORE)   # follows symlinked directories
         elif src.is_file():
             shutil.copy(src, dest / part)
-    course = yaml.safe_load((package / "course.yaml").read_text()) or {}
+    course = load_yaml_text((package / "course.yaml").read_text()) or {}
     (dest / "course.yaml").write_text(f"# {package.name}: the public part of the grader's settings\n"
                                       + yaml.safe_dump(public_course_yaml(course), sort_keys=False))
     return dest

@@ -31,11 +31,11 @@ import sys
 from pathlib import Path
 
 import nbformat
-import yaml
 
 from .course_notebooks import notebook_path
 from ..problems import REPO, list_problems, load_problem  # noqa: F401 (load_problem: the doctest)
 from .public_problems import IGNORE, print_or_fail, write_public_problem
+from ..problems.cache import load_yaml_text
 
 INSTRUCTOR_ONLY = ("course/course_notebooks.py", "course/nbgrader_autograde.py",  # grader/ files (and their aliases)
                    "course/student_edition.py", "course/student_edition.md", "classroom/similarity.py",
@@ -65,7 +65,7 @@ def lesson_solutions(out: Path, solutions: Path = REPO / "solutions") -> list[Pa
     """
     copied = []
     for problem_id, names in LESSON_SOLUTIONS.items():
-        expected = yaml.safe_load((solutions / problem_id / "expected.yaml").read_text()) or {}
+        expected = load_yaml_text((solutions / problem_id / "expected.yaml").read_text()) or {}
         for name in names:
             verdict = (str(expected.get(name) or "").split() or [""])[0]   # "WA" or "WA exhaustive"
             if verdict in ("", "AC"):

@@ -4,6 +4,7 @@
 ``package``               a package ``assignments/<id>/``: load, list, validate, materialise tests
 ``smallcases``            exhaustive small cases (``python -m grader.smallcases --write``)
 ``statements``            the statements' generated "Limits and scoring" block
+``cache``                 the cache of generated tests and parsed YAML: whom it trusts; ``python -m grader warm``
 ========================  =================================================================
 
 Imports: :mod:`grader.judging` (the checker runtime and protocol) and :mod:`grader.jail`, never
@@ -15,8 +16,9 @@ Example:
     'delaunay'
 """
 
-from .package import (ALWAYS_FORBIDDEN, COURSE_CONFIG, REPO, Group, Problem, TestCase, cache_root, check_course,
-                      course_folder, list_problems, load_problem, problems_root, using_course)
+from .package import (ALWAYS_FORBIDDEN, COURSE_CONFIG, REPO, Group, Problem, TestCase, check_course, course_folder,
+                      list_problems, load_problem, problems_root, using_course)
+from .cache import cache_root
 
 __all__ = ["ALWAYS_FORBIDDEN", "COURSE_CONFIG", "REPO", "Group", "Problem", "TestCase", "cache_root", "check_course",
            "course_folder", "list_problems", "load_problem", "problems_root", "using_course"]

@@ -5,7 +5,8 @@ A problem is a directory ``assignments/<id>/`` in the Kattis layout (``problem.y
 plus ``course.yaml`` with the grader's settings (entry function, forbidden modules, groups with
 points and generated cases). Hidden tests are generated with a fixed seed, their answers come
 from ``reference_impl`` (in the grader's process), and they are cached under
-``<checkout>/.cache/grader/`` keyed by a digest of the package. A group marked ``withheld`` (as in
+``<checkout>/.cache/grader/`` keyed by a digest of the package (:mod:`grader.problems.cache`:
+who may write that cache, what it was made for, ``python -m grader warm``). A group marked ``withheld`` (as in
 the students' copy, :mod:`grader.course.public_problems`) keeps its name and points but has no tests here.
 
 Example:
@@ -19,22 +20,21 @@ from __future__ import annotations
 import hashlib
 import importlib.util
 import os
-import shutil
 import subprocess
 import sys
-import tempfile
+import time
 from collections.abc import Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass, field
 from functools import cached_property
 from pathlib import Path
 from types import ModuleType
-from typing import Any
-
-import yaml
+from typing import IO, Any
 
 from ..judging import checker_runtime, feedback_policy
 from ..judging.checker_runtime import load_checker, read_answer
+from . import cache
+from .cache import load_yaml, tests_folder
 
 REPO = Path(__file__).resolve().parent.parent.parent
 ALWAYS_FORBIDDEN = ("reference_impl", "grader")
@@ -128,11 +128,6 @@ def check_course(course_root: str | Path, problem_id: str | None = None) -> Path
     return course
 
 
-def cache_root() -> Path:
-    """Where generated tests are cached: ``$GRADER_CACHE`` or ``<checkout>/.cache/grader``."""
-    return Path(os.environ.get("GRADER_CACHE", REPO / ".cache" / "grader"))
-
-
 @dataclass
 class Group:
     name: str
@@ -213,8 +208,8 @@ class Problem:
         for f in (meta_file, course_file):
             if not f.is_file():
                 raise ValueError(f"problem {path.name!r}: missing {f.name}")
-        meta = yaml.safe_load(meta_file.read_text()) or {}
-        course = yaml.safe_load(course_file.read_text()) or {}
+        meta = load_yaml(meta_file) or {}
+        course = load_yaml(course_file) or {}
         limits = meta.get("limits") or {}
         name = meta.get("name", path.name)
         groups = []
@@ -377,7 +372,7 @@ class Problem:
 
     def _load_tests(self) -> list[TestCase]:
         out: list[TestCase] = []
-        cache = None
+        folder = None
         for g in self.present_groups:
             if g.data:
                 for f in sorted((self.path / g.data).glob("*.in")):
@@ -385,36 +380,27 @@ class Problem:
                     out.append(TestCase(f"{g.name}/{f.stem}", g.name, f.read_text(),
                                         ans.read_text() if ans.exists() else ""))
             if g.cases:
-                cache = cache or self._materialise()
+                folder = folder or self._materialise()
                 for k in range(len(g.cases)):
-                    stem = cache / g.name / f"{k + 1:02d}"
+                    stem = folder / g.name / f"{k + 1:02d}"
                     out.append(TestCase(f"{g.name}/{k + 1:02d}", g.name, stem.with_suffix(".in").read_text(),
                                         stem.with_suffix(".ans").read_text()))
         return out
 
     def _materialise(self) -> Path:
-        """Generate hidden tests once (atomic rename into the cache) and return their directory."""
-        target = cache_root() / self.id / self.digest()
-        if target.is_dir():
-            return target
-        target.parent.mkdir(parents=True, exist_ok=True)
-        tmp = Path(tempfile.mkdtemp(dir=target.parent, prefix=".tmp-"))
-        try:
-            for g in self.present_groups:
-                (tmp / g.name).mkdir()
-                for k, case in enumerate(g.cases):
-                    args = self.generate_args(case, self.seed + 1000 * k + sum(map(ord, g.name)))
-                    stem = tmp / g.name / f"{k + 1:02d}"
-                    stem.with_suffix(".in").write_text(self.checker.write_input(args))
-                    stem.with_suffix(".ans").write_text(self.checker.write_output(self.generator.solve(*args)))
-            try:
-                os.rename(tmp, target)
-            except OSError:  # another process won the race
-                shutil.rmtree(tmp, ignore_errors=True)
-        except BaseException:
-            shutil.rmtree(tmp, ignore_errors=True)
-            raise
-        return target
+        """The folder of the generated tests: from the cache when a trusted copy made for this
+        package is there, else generated now (:mod:`grader.problems.cache`)."""
+        return tests_folder(self.id, self.digest(), self._generate_into)
+
+    def _generate_into(self, folder: Path) -> None:
+        """Write every generated case's ``<group>/<NN>.in`` and ``.ans`` into ``folder``."""
+        for g in self.present_groups:
+            (folder / g.name).mkdir()
+            for k, case in enumerate(g.cases):
+                args = self.generate_args(case, self.seed + 1000 * k + sum(map(ord, g.name)))
+                stem = folder / g.name / f"{k + 1:02d}"
+                stem.with_suffix(".in").write_text(self.checker.write_input(args))
+                stem.with_suffix(".ans").write_text(self.checker.write_output(self.generator.solve(*args)))
 
     def generate_args(self, case: dict, seed: int) -> list[Any]:
         """The entry function's argument list for one generated case: the generator's
@@ -441,3 +427,30 @@ def load_problem(problem_id: str, root: str | Path | None = None) -> Problem:
         known = ", ".join(p.id for p in list_problems(root)) or "none"
         raise ValueError(f"unknown problem {problem_id!r}; known problems: {known}")
     return Problem.load(path)
+
+
+def warm(problem_ids: list[str] | None = None, out: IO[str] | None = None) -> dict[str, Path | None]:
+    """Generate every problem's tests (or ``problem_ids``') into the cache; one line per problem on
+    ``out``. Returns each problem's tests folder (None: it generates nothing)."""
+    problems = [load_problem(p) for p in problem_ids] if problem_ids else list_problems()
+    done: dict[str, Path | None] = {}
+    for k, p in enumerate(problems, 1):
+        if out is not None:
+            print(f"[{k}/{len(problems)}] {p.id}: ", end="", file=out, flush=True)
+        if not any(g.cases for g in p.present_groups):
+            done[p.id] = None
+            if out is not None:
+                print("no generated tests", file=out, flush=True)
+            continue
+        t0, c0 = time.monotonic(), time.process_time()
+        digest = p.digest()
+        manifest = cache.manifest_for(p.id, digest)
+        cached = [r / p.id / digest for r in (cache.cache_root(), cache.private_root())]
+        fresh = not any(f.is_dir() and cache.valid_reason(f, manifest) is None for f in cached)
+        tests = p.tests()
+        done[p.id] = p._materialise()  # the folder tests() read (found again: nothing is generated twice)
+        if out is not None:
+            how = (f"generated in {time.monotonic() - t0:.1f} s ({time.process_time() - c0:.1f} CPU-s)" if fresh
+                   else "cached")
+            print(f"{len(tests)} tests, {how}: {done[p.id]}", file=out, flush=True)
+    return done
