@@ -645,7 +645,10 @@ def run_stdio(box: Sandbox, source: str, input_text: str, time_limit: float, for
         cpu, mem = max(cpu, _cpu_seconds(box, 0) - cpu0), max(peak, _peak_rss_mb(box, 0))
     time_s = round(cpu, 4)
     outcome = _stdio_outcome(box, child, time_limit, time_s, mem, timed_out, junk, out_path, err_path)
-    if program and outcome.status == "crash" and child.exit_status == -signal.SIGABRT and _bad_alloc(err_path):
+    # abort() in the namespace's pid 1 (the jail runs the program as pid 1): its own SIGABRT is
+    # ignored, as for any init, and glibc's abort() falls back to a faulting instruction (SIGSEGV)
+    if program and outcome.status == "crash" and child.exit_status in (-signal.SIGABRT, -signal.SIGSEGV) \
+            and _bad_alloc(err_path):
         outcome = RunOutcome("memory", message="std::bad_alloc: the program could not get more memory (aborted)",
                              time_s=time_s, memory_mb=mem)
     outcome.idle_s = max(0.0, wall - cpu - waited)
