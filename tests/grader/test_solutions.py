@@ -7,7 +7,6 @@ Run: .venv/bin/python -m pytest tests/grader/test_solutions.py -q
 """
 from __future__ import annotations
 
-import dataclasses
 
 import pytest
 import yaml
@@ -37,10 +36,6 @@ def _cpp_cases() -> list[tuple[str, str, str, list[str]]]:
 
 
 CPP_CASES = _cpp_cases()
-#: The C++ verdicts were measured with a 1 s CPU cap per test: a problem whose course.yaml names
-#: no C++ time limit yet is judged with 1 s here (without it quadratic.cpp may pass under the
-#: Python limit).
-CPP_DEFAULT_LIMIT = 1.0
 
 
 @pytest.fixture(scope="module")
@@ -78,8 +73,8 @@ def test_accepted_delaunay_implements_bowyer_watson_itself():
 def test_cpp_solution_verdict(problem, file, verdict, groups, judges):
     key = (problem, "cpp", verdict != "AC")
     if key not in judges:
-        p = load_problem(problem)
-        p = dataclasses.replace(p, time_limits={"cpp": CPP_DEFAULT_LIMIT, **p.time_limits})
+        p = load_problem(problem)  # judged under the problem's own C++ limit (course.yaml time_limits)
+        assert "cpp" in p.time_limits, f"{problem}: course.yaml names no C++ time limit"
         judges[key] = Judge(p, stop_at_first_failure=verdict != "AC")
     result = judges[key].judge_path(REPO / "solutions" / problem / file, follow_links=True)
     failed = [t for t in result.tests if t.verdict not in (Verdict.AC, Verdict.SKIPPED)]
