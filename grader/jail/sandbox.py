@@ -91,8 +91,10 @@ TRUSTED_ENV = "GRADER_TRUSTED"
 #: Address space allowed beyond the memory limit when a cgroup bounds the real memory (MiB).
 ADDRESS_HEADROOM_MB = 1024
 #: Processes a bubblewrap jail adds to the student's: its monitor and its pid-1 reaper, plus room
-#: for reapers of earlier runs: bubblewrap's monitor exits without reaping its reaper, which the
-#: host's init then reaps within about a second (a dead zombie meanwhile, still counted).
+#: for reapers of earlier jails: bubblewrap's monitor exits without reaping its reaper, which the
+#: host's init reaps later (every 2 s or so in this container; a dead zombie meanwhile, still
+#: counted). Only the compile profile has a reaper now: a run's submission is pid 1 itself
+#: (``--as-pid-1`` in :meth:`Sandbox._bwrap_options`), so many short runs leave no zombies.
 BWRAP_PROCESSES = 2 + 8
 #: Not root: processes of the sandbox's user namespace besides the student's threads (the
 #: pid-1 reaper), added to the RLIMIT_NPROC set inside it.
