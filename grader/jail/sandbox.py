@@ -90,11 +90,9 @@ JAIL_ENV = "GRADER_JAIL"
 TRUSTED_ENV = "GRADER_TRUSTED"
 #: Address space allowed beyond the memory limit when a cgroup bounds the real memory (MiB).
 ADDRESS_HEADROOM_MB = 1024
-#: Processes a bubblewrap jail adds to the student's: its monitor and its pid-1 reaper, plus room
-#: for reapers of earlier jails: bubblewrap's monitor exits without reaping its reaper, which the
-#: host's init reaps later (every 2 s or so in this container; a dead zombie meanwhile, still
-#: counted). Only the compile profile has a reaper now: a run's submission is pid 1 itself
-#: (``--as-pid-1`` in :meth:`Sandbox._bwrap_options`), so many short runs leave no zombies.
+#: Processes a bubblewrap jail adds: its monitor and pid-1 reaper, plus room for the zombie reapers
+#: of earlier jails, which the host's init reaps late (every 2 s here). Only compiles have a reaper:
+#: a run's submission is pid 1 (``--as-pid-1``), else many 40 ms tests filled this ("Can't fork").
 BWRAP_PROCESSES = 2 + 8
 #: Not root: processes of the sandbox's user namespace besides the student's threads (the
 #: pid-1 reaper), added to the RLIMIT_NPROC set inside it.
@@ -425,14 +423,7 @@ class Sandbox:
         for path in ["/", *inside, *covered]:  # empty tmpfs owned by the sandbox's uid: read-only
             a += ["--remount-ro", path]
         a += ["--chdir", JAIL_WORKDIR]
-        if self.profile == "run":
-            # the submission runs as the namespace's pid 1, with no reaper above it (it may start no
-            # process: seccomp or the audit hook refuse it; when pid 1 ends, the kernel kills the
-            # namespace). bubblewrap's monitor exits without reaping its reaper, so each run left a
-            # zombie for the host's init, which on this container reaps about every 2 s: a program
-            # judged on many small tests (a C++ or a Python stdio one, 40-60 ms a test) filled the
-            # RLIMIT_NPROC/pids.max headroom and the next jail failed with "Can't fork" (RE, or CE
-            # for the next compile). Measured: 20 runs, 20 zombies without --as-pid-1, none with it.
+        if self.profile == "run":  # the submission is pid 1, no reaper: see BWRAP_PROCESSES
             a.append("--as-pid-1")
         return a
 
