@@ -22,7 +22,7 @@ def alias(name: str, target: str, command: Callable[[ModuleType], int | None] | 
     file by its path does) gets the target's names too.
 
     >>> alias("grader.example_alias", "grader.judging.languages").SUFFIXES
-    ('.py', '.ipynb')
+    ('.py', '.ipynb', '.cpp', '.cc', '.cxx')
     >>> sys.modules.pop("grader.example_alias").__name__
     'grader.judging.languages'
     """
