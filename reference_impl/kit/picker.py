@@ -254,7 +254,11 @@ class PointPicker(KitWidget):
         self.clear_button = button("clear", "trash", "7em", tooltip="remove every point")
         self.status = widgets.HTML()
         # the points as text: the box, the button that applies it, the message about a bad line
+        # continuous_update=False: the box's text reaches the kernel whole when it loses the focus
+        # (Tab to "set points", or a click on it), never as a half-synced prefix (CI under load saw
+        # "line 1: '0'" when the text was typed fast and the button pressed at once)
         self.text = widgets.Textarea(description="points", placeholder="one point a line: x, y",
+                                     continuous_update=False,
                                      layout=widgets.Layout(width="19em", height="7em"),
                                      style={"description_width": "4em"})
         self.text_button = button("set points", "check", "9em", tooltip="replace the points by the box's lines")

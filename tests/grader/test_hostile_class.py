@@ -77,8 +77,11 @@ def test_hostile_class_credits_nothing_leaks_nothing_lists_everyone(tmp_path, fi
     everything = [dump, open(grades).read(), repr(out)] + [p.read_text() for p in reports.rglob("*.html")]
     assert not any(SECRET in text for text in everything), "a linked file's content leaked"
     assert not any("\x1b" in text for text in everything), "an ANSI escape reached an output"
-    # the sparse file was never read (it used to cost 2.1 GB): pool workers stayed small
-    assert resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss < 1 << 20
+    # the sparse file was never read (it used to cost 2.1 GB): no child of this process reached its
+    # 2 GiB. (Not 1 GiB: RUSAGE_CHILDREN is the worker's whole history, and a jailed program, a
+    # direct child of bubblewrap since it runs as pid 1, may have used up to its 1 GiB limit in an
+    # earlier test of the same worker, e.g. a memory bomb: 1.07 GiB was seen in CI.)
+    assert resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss < (2 << 30) >> 10
 
 
 def descendants(pid: int) -> set[int]:
