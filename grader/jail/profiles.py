@@ -41,11 +41,14 @@ COMPILE_ETC = ("/etc/ld.so.cache", "/etc/ld.so.conf", "/etc/ld.so.conf.d", "/etc
 SYSTEM_TREES = ("/usr", "/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32")
 
 
-def compile_bwrap_options(trees: Sequence[str], scratch: str, disk_mb: int, hidden: Sequence[str]) -> list[str]:
-    """bubblewrap's options for the compile jail: ``trees`` (the system trees that exist, links
-    kept as links), the loader's ``/etc`` files, ``/dev/null``, a ``disk_mb`` MiB ``/tmp``, the host
-    folder ``scratch`` (staged for root) bound writable at :data:`COMPILE_WORKDIR`, every path of
-    ``hidden`` that lies under ``/usr`` covered by an empty tmpfs, the new root read-only."""
+def base_bwrap_options(trees: Sequence[str], etc: Sequence[str]) -> list[str]:
+    """The options every jail starts with: all namespaces new, no capabilities, a new session, the
+    system ``trees`` read-only (a link kept as a link, a missing tree skipped) and the ``etc`` files
+    that exist.
+
+    >>> base_bwrap_options((), ("/etc/ld.so.cache",))[-3:]
+    ['--ro-bind-try', '/etc/ld.so.cache', '/etc/ld.so.cache']
+    """
     a = ["--unshare-all", "--unshare-user", "--disable-userns", "--die-with-parent", "--new-session",
          "--cap-drop", "ALL", "--hostname", "sandbox"]
     for d in trees:
@@ -53,8 +56,17 @@ def compile_bwrap_options(trees: Sequence[str], scratch: str, disk_mb: int, hidd
             a += ["--symlink", os.readlink(d), d]
         elif os.path.isdir(d):
             a += ["--ro-bind", d, d]
-    for e in COMPILE_ETC:
+    for e in etc:
         a += ["--ro-bind-try", e, e]
+    return a
+
+
+def compile_bwrap_options(trees: Sequence[str], scratch: str, disk_mb: int, hidden: Sequence[str]) -> list[str]:
+    """bubblewrap's options for the compile jail: ``trees`` (the system trees that exist, links
+    kept as links), the loader's ``/etc`` files, ``/dev/null``, a ``disk_mb`` MiB ``/tmp``, the host
+    folder ``scratch`` (staged for root) bound writable at :data:`COMPILE_WORKDIR`, every path of
+    ``hidden`` that lies under ``/usr`` covered by an empty tmpfs, the new root read-only."""
+    a = base_bwrap_options(trees, COMPILE_ETC)
     a += ["--size", "65536", "--perms", "0755", "--tmpfs", "/dev", "--dev-bind", "/dev/null", "/dev/null",
           "--remount-ro", "/dev",
           "--size", str(disk_mb << 20), "--perms", "1777", "--tmpfs", "/tmp",

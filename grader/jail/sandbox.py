@@ -384,15 +384,7 @@ class Sandbox:
         ``/tmp`` and ``/dev/shm`` (:func:`tmpfs.sizes`): bubblewrap's ``--dev`` and its new root are
         unsized tmpfs owned by the sandbox's uid, so they and every covering tmpfs are remounted
         read-only once set up (``--size`` applies only to the next ``--tmpfs``)."""
-        a = ["--unshare-all", "--unshare-user", "--disable-userns", "--die-with-parent", "--new-session", "--cap-drop", "ALL",
-             "--hostname", "sandbox"]
-        for d in ("/usr", "/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32"):
-            if os.path.islink(d):
-                a += ["--symlink", os.readlink(d), d]
-            elif os.path.isdir(d):
-                a += ["--ro-bind", d, d]
-        for e in ETC_ALLOWED:
-            a += ["--ro-bind-try", e, e]
+        a = profiles.base_bwrap_options(profiles.SYSTEM_TREES, ETC_ALLOWED)
         a += ["--proc", "/proc", "--dev", "/dev",
               "--size", str(plan.shm_mb << 20), "--perms", "1777", "--tmpfs", "/dev/shm", "--remount-ro", "/dev",
               "--size", str(plan.disk_mb << 20), "--perms", "1777", "--tmpfs", "/tmp",
