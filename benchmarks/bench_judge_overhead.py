@@ -48,7 +48,7 @@ student: the pool worker's Judge reading and parsing every test, first-time cost
 ``python -c 'import grader'``, ``load_problem(id)`` in-process, ``python -m grader list``, and
 one whole ``python -m grader judge`` of the 30-test empty-work submission (the course's target:
 under 1.5 s of judge overhead for 30 function-mode tests). C++: a compile line of its own,
-not counted in the ratio (none yet: no accepted ``.cpp`` exists).
+not counted in the ratio (the judge compiles in its jail; the line times the same command outside it).
 
 Run (as root or as an ordinary user; the worktree's code via PYTHONPATH):
     PYTHONPATH=$PWD .venv/bin/python benchmarks/bench_judge_overhead.py [--students 3]
@@ -99,6 +99,7 @@ REPO = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(REPO))
 
 from grader import list_problems, load_problem  # noqa: E402
+from grader.judging.languages import LANGUAGES as JUDGED, Language  # noqa: E402
 
 CLK_TCK = os.sysconf("SC_CLK_TCK")
 # the notebooks' sample check (%check_samples) as its first call in a fresh kernel: judge the samples
@@ -110,19 +111,8 @@ QUICK_PROBLEMS = ("closest-pair", "largest-empty-circle")
 TRIVIAL = "def delaunay(points):\n    return []  # every test is collinear: no triangle is the right answer\n"
 
 
-@dataclass(frozen=True)
-class Language:
-    """A submission language as the benchmark sees it: file suffix and how to compile (if at all)."""
-
-    name: str
-    suffix: str
-    compile_cmd: tuple[str, ...] = ()  # {src} and {out} are filled in; empty: interpreted
-
-
-LANGUAGES = {
-    "python": Language("python", ".py"),
-    "cpp": Language("cpp", ".cpp", ("g++", "-std=gnu++17", "-O2", "-pipe", "-o", "{out}", "{src}")),
-}
+#: the languages as the judge lists them (grader.judging.languages), by name
+LANGUAGES = {lang.name: lang for lang in JUDGED}
 
 
 # -- measuring the CPU of a command and everything it starts -------------------------------------
@@ -386,10 +376,13 @@ def best(meter: Meter, cmd: list[str], repeat: int, env: dict[str, str] | None =
 
 # -- classes, grading and reading the store ------------------------------------------------------
 def accepted_solution(problem: str, lang: Language) -> Path | None:
-    """The first file ``solutions/<problem>/expected.yaml`` marks AC, of the language's suffix."""
-    expected = yaml.safe_load((REPO / "solutions" / problem / "expected.yaml").read_text()) or {}
+    """The first file marked AC in ``solutions/<problem>/expected.yaml`` (``expected_cpp.yaml`` for
+    a compiled language) with one of the language's suffixes."""
+    table = "expected_cpp.yaml" if lang.compile else "expected.yaml"
+    path = REPO / "solutions" / problem / table
+    expected = (yaml.safe_load(path.read_text()) or {}) if path.is_file() else {}
     for name, verdict in expected.items():
-        if str(verdict).split()[0] == "AC" and name.endswith(lang.suffix) and "/" not in name:
+        if str(verdict).split()[0] == "AC" and name.endswith(lang.suffixes) and "/" not in name:
             return REPO / "solutions" / problem / name
     return None
 
@@ -400,7 +393,7 @@ def make_class(root: Path, problem: str, source: str, students: int, lang: Langu
     for k in range(1, students + 1):
         d = root / f"s{k}"
         d.mkdir(parents=True)
-        (d / f"{problem}{lang.suffix}").write_text(f"{source.rstrip()}\n{comment} benchmark copy for student {k}\n")
+        (d / f"{problem}{lang.suffixes[0]}").write_text(f"{source.rstrip()}\n{comment} benchmark copy for student {k}\n")
 
 
 @dataclass
@@ -724,19 +717,18 @@ def main(argv: list[str] | None = None) -> dict[str, Any]:
             for pid in problems:
                 sol = accepted_solution(pid, lang)
                 if sol is None:
-                    skipped.append(f"{pid} {lang_name}: no accepted {lang.suffix} solution in solutions/{pid}/")
+                    skipped.append(f"{pid} {lang_name}: no accepted {lang.suffixes[0]} solution in solutions/{pid}/")
                     continue
                 cdir = tmp / "class" / f"{pid}-{lang_name}"
                 make_class(cdir, pid, sol.read_text(), a.students, lang)
-                if lang.compile_cmd:
-                    exe = tmp / f"{pid}.exe"
-                    cmd = [c.format(src=sol, out=exe) for c in lang.compile_cmd]
+                if lang.compile:  # the judge's own command, here outside the jail
+                    cmd = list(lang.compile_command(str(sol), str(tmp / f"{pid}.exe")))
                     compile_cpu = meter.run(cmd).ok().cpu
                 else:
                     compile_cpu = None
                 run = grade_run(meter, pid, cdir, tmp / f"{pid}-{lang_name}.sqlite", a.jobs, lang_name)
                 run.extra = {"solution": str(sol.relative_to(REPO)), "compile": compile_cpu,
-                             "replay": replay(pid, a.repeat), "imports": import_cost(meter, sol, a.repeat) if not lang.compile_cmd else 0.0}
+                             "replay": replay(pid, a.repeat), "imports": import_cost(meter, sol, a.repeat) if not lang.compile else 0.0}
                 runs.append(run)
                 print(f"graded {pid} ({lang_name}, {sol.name}): run {run.cpu:.2f} CPU-s, {run.wall:.1f} s wall",
                       file=sys.stderr)
