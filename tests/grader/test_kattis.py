@@ -25,9 +25,10 @@ verifyproblem compiles them with its own flags and runs them: ``accepted.cpp`` m
 exported group, as our expected verdict says. Where each other C++ file goes is tested without
 problemtools below.
 
-Measured 2026-12-06 with the 12 problems and the 9 C++ accepted solutions in their packages, all
-submissions of every problem in one test with a pool of 2: 602 s of CPU (552 user + 51 system),
-47 min of wall time under a load average of 13-14 on 2 cores, and 908 s in CI.
+Measured 2026-12-06 with the 12 problems: all submissions of every problem in one test with a
+pool of 2 took 602 s of CPU (552 user + 51 system), 908 s in CI. As now (``/usr/bin/time`` around
+pytest, load average 8 on 2 cores): the full matrix on proximity-network 102 s of CPU (345 s of
+wall time), each other problem 20-25 s of CPU (55-130 s of wall time), about 330 s of CPU in all.
 
 Run: .venv/bin/python -m pytest tests/grader/test_kattis.py -q
 """
