@@ -36,7 +36,7 @@ a 3D picture turns with the arrow keys and steps with Page Down / Page Up, Home 
 Pictures carry an ARIA label, and a live region reads out the status line or the caption.
 
 Every widget also carries a static PNG for notebooks run without a browser (drawn by matplotlib
-only when the notebook is saved or exported; in the page the browser draws).
+when the widget is displayed; in the page, the browser draws the picture).
 ``quick_mode()`` is true when the environment sets ``COURSE_QUICK=1`` (CI):
 lessons then use small sizes.
 
