@@ -193,10 +193,15 @@ function render({ model, el }) {
     requestAnimationFrame(() => push(list, performance.now() - since));
   }
 
+  let saving = false;
   function saveView() {
-    model.set("yaw", view.yaw);
-    model.set("pitch", view.pitch);
-    model.save_changes();
+    saving = true;            // both at once: a change event must not read one new and one old value
+    try {
+      model.set({ yaw: view.yaw, pitch: view.pitch });
+      model.save_changes();
+    } finally {
+      saving = false;
+    }
   }
 
   function setStep(v) {
@@ -271,7 +276,7 @@ function render({ model, el }) {
   model.on("change:steps", () => { describe(); draw(); });
   model.on("change:label", describe);
   const fromKernel = () => {
-    if (press) return;
+    if (press || saving) return;
     view = { yaw: model.get("yaw") || 0, pitch: model.get("pitch") || 0 };
     draw();
   };

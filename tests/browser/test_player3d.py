@@ -95,7 +95,12 @@ def use_player(page, var: str, label: str) -> dict:
     player = page.locator(".kit-player-3d").first
     canvas = player.locator("canvas.kit-canvas3d")
     canvas.wait_for(timeout=60_000)
-    canvas.evaluate("c => c.scrollIntoView({block: 'center', inline: 'center'})")
+    for _ in range(20):        # JupyterLab may still scroll after Run All: until the picture stays in view
+        canvas.evaluate("c => c.scrollIntoView({block: 'center', inline: 'center'})")
+        page.wait_for_timeout(250)
+        box = canvas.bounding_box()
+        if box and 0 <= box["y"] and box["y"] + box["height"] <= 1000:
+            break
     n = kernel(page, f"print(json.dumps(len({var}.steps)))")
     geometry = kernel(page, f"g = {var}.view.geometry\nprint(json.dumps([len(g['xyz']) // 3, len(g['edges']) // 2,"
                             " len(g['faces']) // 3]))")
@@ -105,6 +110,11 @@ def use_player(page, var: str, label: str) -> dict:
     before = canvas.evaluate(STATS)
     box = canvas.bounding_box()
     cx, cy = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+    under = page.evaluate("([x, y]) => { const e = document.elementFromPoint(x, y); return e ? e.tagName + '.' + e.className : null; }",
+                          [cx, cy])
+    if not (under or "").startswith("CANVAS"):
+        page.screenshot(path=str(SHOTS / f"player3d-{label}-covered.png"))
+    assert (under or "").startswith("CANVAS"), f"{label}: the middle of the picture is under {under} ({box})"
     page.mouse.move(cx, cy)
     page.mouse.down()
     for s in range(1, 21):
