@@ -162,9 +162,9 @@ class Player3D(KitWidget):
         self.play = widgets.Play(value=1, min=1, max=last, step=1, interval=interval, description="play")
         self.slider = widgets.IntSlider(value=1, min=1, max=last, description="step", continuous_update=True)
         # all three linked in the page: a step reaches the picture without the kernel
-        widgets.jslink((self.play, "value"), (self.slider, "value"))
-        widgets.jslink((self.play, "value"), (self.view, "step"))
-        widgets.jslink((self.play, "playing"), (self.view, "playing"))
+        self.links = [widgets.jslink((self.play, "value"), (self.slider, "value")),
+                      widgets.jslink((self.play, "value"), (self.view, "step")),
+                      widgets.jslink((self.play, "playing"), (self.view, "playing"))]
         self.prev = button("previous", "step-backward")
         self.next = button("next", "step-forward")
         self.prev.tooltip, self.next.tooltip = "the previous step", "the next step"
