@@ -216,6 +216,7 @@ class Player3D(KitWidget):
                                              alpha=g.get("face_alpha", 0.25), edgecolors="none"))
         if len(edges):
             cmap = colormaps["viridis"]
+            edges = edges[np.argsort(-z[edges].sum(axis=1))]            # far ones first, as the page draws
             colors = (cmap(near[edges].mean(axis=1)) if g["depth_colors"] else g.get("edge_color", COLORS["edge"]))
             ax.add_collection(LineCollection(xy[edges], colors=colors, linewidths=g.get("lw", 0.8)))
         marks = np.zeros(len(xyz), dtype=bool)

@@ -71,6 +71,7 @@ def _forget_drawing(ax) -> bool:
             artist.remove()
     if ax.get_legend() is not None:
         ax.get_legend().remove()
+    ax.relim()                           # the data limits forget the removed artists, as after cla
     for loc in ("left", "right"):
         if ax.get_title(loc):
             ax.set_title("", loc=loc)
