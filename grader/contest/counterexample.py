@@ -111,18 +111,19 @@ def public_first_cases(problem: Problem) -> list[dict]:
     return [{**c, "points": c["points"][::-1]} if isinstance(c.get("points"), list) else c for c in cases]
 
 
-def search(problem: Problem | str, path: str | Path, seconds: float = 10.0, seed: int = 1) -> Counterexample | None:
+def search(problem: Problem | str, path: str | Path, seconds: float = 10.0, seed: int = 1, *,
+           trusted: bool | None = None) -> Counterexample | None:
     """A small input (public families only, shrunk) that the submission at ``path`` fails with WA,
     PE or RE, found within ``seconds`` (plus one test's limits), or None. Never the input of a
     test of the problem. ``ValueError`` when the problem has no generator (its reference
-    answers) or ``path`` is not a file."""
+    answers) or ``path`` is not a file. ``trusted``: as :class:`grader.contest.judge.Judge`'s."""
     problem = load_problem(problem) if isinstance(problem, str) else problem
     if not seconds > 0:
         raise ValueError(f"counterexample search: seconds must be positive, got {seconds!r}")
     t0 = time.monotonic()
     hidden = hidden_inputs(problem)
     failure = engine.stress(problem, path, seconds, seed=seed, first=public_first_cases(problem),
-                            exclude=hidden, verdicts=TRIGGERS, max_chars=INPUT_MAX_CHARS)
+                            exclude=hidden, verdicts=TRIGGERS, max_chars=INPUT_MAX_CHARS, trusted=trusted)
     if (failure is None or len(failure.input_text) > INPUT_MAX_CHARS
             or engine.normalized(failure.input_text) in hidden):
         return None  # the engine never judges a test's input: the second check is a guard
@@ -142,7 +143,7 @@ def failing_groups(result: JudgeResult) -> dict[str, str]:
 
 
 def attach(result: JudgeResult, problem: Problem, path: str | Path, seconds: float | None = None,
-           seed: int = 1) -> Counterexample | None:
+           seed: int = 1, *, trusted: bool | None = None) -> Counterexample | None:
     """Search once for ``result``'s submission when a group failed with WA, PE or RE, and put the
     counterexample on the failing groups (see the module's docstring); nothing when none failed
     so or the budget is 0. ``seconds``: the budget (default: the problem's ``course.yaml``).
@@ -154,7 +155,7 @@ def attach(result: JudgeResult, problem: Problem, path: str | Path, seconds: flo
         return None
     t0 = time.monotonic()
     try:
-        cx = search(problem, path, budget, seed)
+        cx = search(problem, path, budget, seed, trusted=trusted)
     except ValueError as exc:  # no reference answers in this copy of the problem, a vanished file
         result.extra["counterexample_search"] = {"found": False, "seconds": 0.0, "note": str(exc)}
         return None

@@ -198,12 +198,12 @@ class _Runner:
 
     def __init__(self, problem: Problem, path: Path, deadline: float, stats: Stats,
                  exclude: frozenset[str] = frozenset(), verdicts: frozenset[Verdict] | None = None,
-                 max_chars: int | None = None):
+                 max_chars: int | None = None, trusted: bool | None = None):
         problem = copy.copy(problem)               # the caller's problem keeps its tests
         problem.__dict__["_tests"] = []            # no hidden tests: ours are set per batch
         self.problem = problem
         self.judge = Judge(problem, hide=[str(path.resolve().parent)], stop_at_first_failure=True,
-                           stderr_lines=STDERR_LINES)
+                           stderr_lines=STDERR_LINES, trusted=trusted)
         self.judge.keep_build = True  # a compiled submission is compiled once for the whole search
         self.sub = Submission.from_path(path, follow_links=True)
         self.deadline = deadline
@@ -272,7 +272,8 @@ class _Runner:
 def stress(problem_id: str | Problem, path: str | Path, seconds: float = 10.0, seed: int = 1,
            log: Callable[[str], None] = lambda s: None, stats: Stats | None = None,
            first: list[dict] | None = None, exclude: Collection[str] = (),
-           verdicts: Collection[Verdict] | None = None, max_chars: int | None = None) -> Failure | None:
+           verdicts: Collection[Verdict] | None = None, max_chars: int | None = None,
+           trusted: bool | None = None) -> Failure | None:
     """Search for a failing input of ``path`` on ``problem_id`` (an id or a loaded problem) for
     ``seconds``; the smallest failure found that fails alone too (shrunk as far as the time
     allows), or None. Ends within ``seconds`` plus one test's limits. ``stats`` (if given) receives
@@ -281,7 +282,8 @@ def stress(problem_id: str | Problem, path: str | Path, seconds: float = 10.0, s
     The engine of :mod:`grader.contest.counterexample` too: ``first`` replaces the first cases
     (default :func:`_first_cases`), an input whose :func:`normalized` text is in ``exclude`` is
     never judged (nor reported, nor kept while shrinking), nor one longer than ``max_chars``
-    characters, and with ``verdicts`` only a failure with one of them counts (TLE never does)."""
+    characters, and with ``verdicts`` only a failure with one of them counts (TLE never does).
+    ``trusted``: as :class:`grader.contest.judge.Judge`'s."""
     problem = load_problem(problem_id) if isinstance(problem_id, str) else problem_id
     if problem.generator_path is None or not problem.generator_path.is_file():
         raise ValueError(f"problem {problem.id!r}: stress needs the problem's generator (the reference answers)")
@@ -291,7 +293,7 @@ def stress(problem_id: str | Problem, path: str | Path, seconds: float = 10.0, s
     stats = stats if stats is not None else Stats()
     deadline = time.monotonic() + seconds
     runner = _Runner(problem, path, deadline, stats, frozenset(exclude),
-                     None if verdicts is None else frozenset(verdicts), max_chars)
+                     None if verdicts is None else frozenset(verdicts), max_chars, trusted)
     try:
         return _search(problem, runner, stats, deadline, seed, log, first)
     finally:

@@ -9,6 +9,7 @@ Example:
 
 from __future__ import annotations
 
+import json
 from dataclasses import asdict, dataclass, field
 from enum import Enum
 from typing import Any
@@ -166,4 +167,29 @@ def format_table(result: JudgeResult) -> str:
         lines.append(f"{'first failure' if k == 0 else 'also failed'}: {t.name}: {t.message[:MESSAGE_SHOWN]}")
         if t.input_preview:
             lines.append("its input:\n" + t.input_preview.rstrip("\n"))
+    lines += counterexample_lines(result)
     return "\n".join(lines)
+
+
+CX_ANSWER_LINES = 12  #: the table shows this many lines of the answer to a counterexample
+
+
+def counterexample_lines(result: JudgeResult) -> list[str]:
+    """The table's lines about the counterexample search (:mod:`grader.contest.counterexample`):
+    the input, the submission's answer, why it is wrong; or that none was found."""
+    if not result.counterexamples:
+        return []
+    found = {g: c for g, c in result.counterexamples.items() if c}
+    if not found:
+        note = (result.extra.get("counterexample_search") or {}).get("note", "")
+        return ["", f"counterexample search: {note or 'no failing input found among small public inputs'}"]
+    cx = next(iter(found.values()))
+    answer = cx["answer"].rstrip("\n").splitlines() or ["(nothing)"]
+    if len(answer) > CX_ANSWER_LINES:
+        answer = answer[:CX_ANSWER_LINES] + [f"... ({len(answer) - CX_ANSWER_LINES} more lines)"]
+    out = ["", f"a small input your program also gets wrong ({cx['verdict']}, {cx['size']} elements; "
+               f"for {', '.join(found)}; found in {cx['seconds']:.1f} s, not a test of the problem):",
+           cx["input"].rstrip("\n"), "your answer:", *answer, f"why: {cx['reason'][:MESSAGE_SHOWN]}"]
+    if cx.get("certificate"):
+        out.append(f"certificate: {json.dumps(cx['certificate'])[:MESSAGE_SHOWN]}")
+    return out
