@@ -176,3 +176,49 @@ def test_a_cpp_wrong_solution_goes_through_the_same_path_compiled_once(monkeypat
 def test_size_counts_points_vertices_and_operations():
     assert cx_mod.size_of({"kind": "ops", "operations": [["count"]] * 4}) == 4
     assert cx_mod.size_of({"kind": "points", "points": [[0, 0]] * 3, "start": [0, 0]}) == 3
+
+
+def _search_after_scores(problem_id, student, sha, file, db_path, *rest):
+    """``search_one``, checking first that every student's score is stored (runs in a pool worker)."""
+    from grader.classroom.store import ResultStore
+
+    store = ResultStore(db_path)
+    try:
+        status = {s["student"]: s["status"] for s in store.submissions(problem_id)}
+    finally:
+        store.close()
+    assert status == {"ada": "done", "bob": "done"}, status
+    return _REAL_SEARCH_ONE(problem_id, student, sha, file, db_path, *rest)
+
+
+_REAL_SEARCH_ONE = None  #: the real ``search_one``, set by the test before the workers are forked
+
+
+def test_class_grading_stores_every_score_then_searches_the_failing_ones(tmp_path, monkeypatch):
+    global _REAL_SEARCH_ONE
+    from grader.classroom import class_counterexamples, classgrade
+    from grader.classroom.store import ResultStore
+
+    problem = tiny_problem(tmp_path, exhaustive=[{"kind": "points", "points": [[0, 0], [4, 0], [0, 4], [4, 4]],
+                                                  "shuffle": False}])
+    for mod in (classgrade, class_counterexamples, judge_mod):
+        monkeypatch.setattr(mod, "load_problem", lambda pid: problem)
+    subs = tmp_path / "subs"
+    for student, body in (("ada", "pass"), ("bob", "if len(points) >= 3:\n    return [[0, 1, 2]] * 2")):
+        (subs / student).mkdir(parents=True)
+        function_solution(subs / student, body)
+    _REAL_SEARCH_ONE = class_counterexamples.search_one
+    monkeypatch.setattr(class_counterexamples, "search_one", _search_after_scores)
+    db = tmp_path / "results.sqlite"
+    out = classgrade.grade_class(problem.id, subs, db, progress=False, counterexample_seconds=30)
+    assert {s["student"]: s["verdict"] for s in out} == {"ada": "AC", "bob": "WA"}
+    store = ResultStore(db)
+    try:
+        latest = store.latest(problem.id)
+        assert store.counterexamples("ada", problem.id, latest["ada"]["sha"]) is None  # accepted: no search
+        groups, search = store.counterexamples("bob", problem.id, latest["bob"]["sha"])
+        assert search["found"] and groups["exhaustive"]["size"] == 3, (groups, search)
+        assert store.counterexample_seconds(problem.id)[0] == 1
+        assert class_counterexamples.pending(store, problem) == []  # a rerun of grade searches nothing again
+    finally:
+        store.close()
