@@ -288,9 +288,23 @@ def test_a_counterexample_in_the_feedback_and_the_json_leaks_nothing(pid, entry,
     found = attach(result, full, path, seconds=20)
     assert found is not None and found.verdict == "RE", result.extra
     assert normalized(found.input) not in hidden_inputs(full)
-    assert leaks(problem, json.dumps(result.to_json()["groups"]), "") == []
+    # the counterexample's own numbers (the submission prints them as hex, repr, ...) are its to show
+    own = " ".join(form for tok in found.input.split() for form in _forms(tok))
+    assert leaks(problem, json.dumps(result.to_json()["groups"]), own) == []
     for level in HIDDEN_LEVELS:
         with policy(problem, level):
             feedback = notebook_feedback(problem, result)
             assert "a small input your code also gets wrong" in feedback
-            assert leaks(problem, feedback, frame_of(problem, result)) == [], (level, feedback[:2000])
+            assert leaks(problem, feedback, frame_of(problem, result) + own) == [], (level, feedback[:2000])
+
+
+def _forms(tok: str) -> set[str]:
+    """The forms of one number a message could use (as :func:`_numbers` lists them)."""
+    try:
+        f = float(tok)
+    except ValueError:
+        return set()
+    forms = {tok, repr(f), f.hex(), f"{f:.6g}", json.dumps(f)}
+    if f.is_integer() and abs(f) < 1e18:
+        forms.add(str(int(f)))
+    return forms
