@@ -222,3 +222,21 @@ def test_class_grading_stores_every_score_then_searches_the_failing_ones(tmp_pat
         assert class_counterexamples.pending(store, problem) == []  # a rerun of grade searches nothing again
     finally:
         store.close()
+
+
+def test_the_sample_check_shows_a_counterexample_only_when_a_sample_failed(tmp_path, monkeypatch):
+    from grader.contest import sample_check
+
+    problem = tiny_problem(tmp_path, exhaustive=[{"kind": "points", "points": [[0, 0], [4, 0], [0, 4], [4, 4]],
+                                                  "shuffle": False}])
+    monkeypatch.setattr(sample_check, "load_problem", lambda pid: problem)
+    good = function_solution(tmp_path, "pass")
+    calls = _no_search(monkeypatch)
+    result = Judge(problem, hide=[str(tmp_path)], trusted=True).judge_path(good)
+    assert result.verdict == "AC" and sample_check.search_samples(problem.id, result, good) == "" and calls == []
+    monkeypatch.undo()
+    monkeypatch.setattr(sample_check, "load_problem", lambda pid: problem)
+    bad = function_solution(tmp_path, "if len(points) >= 3:\n    return [[0, 1, 2]] * 2", name="bad.py")
+    result = Judge(problem, hide=[str(tmp_path)], trusted=True).judge_path(bad)
+    html_text = sample_check.search_samples(problem.id, result, bad, seconds=30)
+    assert "a small input your code also gets wrong (WA, 3 elements" in html_text and "your answer:" in html_text
