@@ -120,9 +120,9 @@ def normalized(text: str) -> str:
     """``text`` with its layout and number spellings made canonical, to compare inputs
     (``1``, ``1.0`` and ``1e0`` read the same; so do any runs of blanks and newlines).
 
-    >>> normalized("2\n0 1.0\n  3 4\n") == normalized("2 0.0e0 1 3 4")
+    >>> normalized("2\\n0 1.0\\n  3 4\\n") == normalized("2 0.0e0 1 3 4")
     True
-    >>> normalized("2\n0 1\n") == normalized("2\n1 0\n")
+    >>> normalized("2\\n0 1\\n") == normalized("2\\n1 0\\n")
     False
     """
     out = []
