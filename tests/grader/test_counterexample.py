@@ -157,7 +157,24 @@ def test_feedback_schema_values(tmp_path):
     assert p.counterexample_seconds == 2.5 and p.feedback_level("exhaustive") == "verdict"
 
 
-def test_a_cpp_wrong_solution_goes_through_the_same_path_compiled_once(monkeypatch):
+WRONG_CPP = r"""
+#include <cstdio>
+int main() {
+    int n = 0;
+    if (std::scanf("%d", &n) != 1) return 1;
+    if (n >= 3) std::printf("2\n0 1 2\n0 1 2\n"); else std::printf("0\n");
+    return 0;
+}
+"""
+
+
+def test_a_cpp_wrong_solution_goes_through_the_same_path_compiled_once(tmp_path, monkeypatch, capsys):
+    """A C++ program (stdio mode) that repeats a triangle on 3+ points: the judge compiles it once,
+    the search once more (its own judge), and finds the 3-point input; the answer is its output."""
+    problem = tiny_problem(tmp_path, exhaustive=[{"kind": "points", "points": [[0, 0], [4, 0], [0, 4], [4, 4]],
+                                                  "shuffle": False}])
+    path = tmp_path / "wrong.cpp"
+    path.write_text(WRONG_CPP)
     builds = []
     real = compile_mod.compile_source
 
@@ -165,12 +182,10 @@ def test_a_cpp_wrong_solution_goes_through_the_same_path_compiled_once(monkeypat
         builds.append(1)
         return real(*args, **kw)
     monkeypatch.setattr(judge_mod, "compile_source", counted)
-    path = SOLUTIONS / "closest-pair" / "wrong_double.cpp"
-    found = cx_mod.search("closest-pair", path, seconds=60)
-    assert len(builds) == 1
-    if found is not None:  # the double-precision mistake may need inputs beyond the small ones
-        assert found.verdict in ("WA", "PE", "RE") and found.size <= 40
-        assert stress_mod.normalized(found.input) not in cx_mod.hidden_inputs(load_problem("closest-pair"))
+    code, out = _cli(monkeypatch, capsys, problem, str(path), "--json", "--counterexample-seconds", "60")
+    assert code == 1 and len(builds) == 2, (builds, out[-2000:])  # the judging's build, then the search's
+    cx = json.loads(out)["groups"][0]["counterexample"]
+    assert cx["verdict"] == "WA" and cx["size"] == 3 and cx["answer"] == "2\n0 1 2\n0 1 2\n", cx
 
 
 def test_size_counts_points_vertices_and_operations():
