@@ -120,6 +120,9 @@ def search(problem: Problem | str, path: str | Path, seconds: float = 10.0, seed
     problem = load_problem(problem) if isinstance(problem, str) else problem
     if not seconds > 0:
         raise ValueError(f"counterexample search: seconds must be positive, got {seconds!r}")
+    if problem.generator_path is None or not problem.generator_path.is_file():
+        raise ValueError(f"problem {problem.id!r}: no counterexample search in this copy of the problem: it has no "
+                         "reference answers (the generator stays with the instructor)")
     t0 = time.monotonic()
     hidden = hidden_inputs(problem)
     failure = engine.stress(problem, path, seconds, seed=seed, first=public_first_cases(problem),
@@ -158,6 +161,7 @@ def attach(result: JudgeResult, problem: Problem, path: str | Path, seconds: flo
         cx = search(problem, path, budget, seed, trusted=trusted)
     except ValueError as exc:  # no reference answers in this copy of the problem, a vanished file
         result.extra["counterexample_search"] = {"found": False, "seconds": 0.0, "note": str(exc)}
+        result.counterexamples.update({g: None for g in groups})
         return None
     spent = round(time.monotonic() - t0, 3)
     note = "" if cx is not None else f"no failing input found among small public inputs in {spent:g} s"

@@ -255,3 +255,16 @@ def test_the_sample_check_shows_a_counterexample_only_when_a_sample_failed(tmp_p
     result = Judge(problem, hide=[str(tmp_path)], trusted=True).judge_path(bad)
     html_text = sample_check.search_samples(problem.id, result, bad, seconds=30)
     assert "a small input your code also gets wrong (WA, 3 elements" in html_text and "your answer:" in html_text
+
+
+def test_a_copy_of_the_problem_without_reference_answers_says_why_there_is_none(tmp_path):
+    import dataclasses
+
+    from grader.judging.verdicts import JudgeResult, TestResult, Verdict
+
+    problem = dataclasses.replace(tiny_problem(tmp_path), generator_path=None)
+    result = JudgeResult(problem.id, "x.py", [TestResult("exhaustive/1", "exhaustive", Verdict.WA)],
+                         problem.group_points)
+    assert cx_mod.attach(result, problem, function_solution(tmp_path, "pass"), seconds=5) is None
+    assert "no reference answers" in result.extra["counterexample_search"]["note"]
+    assert "no reference answers" in format_table(result)
