@@ -61,10 +61,14 @@ class TestResult:
     hidden_message: str = ""
     received: Any = field(default=None, repr=False, compare=False)  #: a wrong answer, for reports only
     stderr: str = field(default="", repr=False)
+    #: a failing test's answer as the submission gave it, as text (capped; the counterexample
+    #: search shows it): not in JSON, not stored
+    answer: str = field(default="", repr=False, compare=False)
 
     def to_json(self) -> dict:
         d = asdict(self)
         d.pop("received")
+        d.pop("answer")
         if not self.stderr:
             d.pop("stderr")
         d["verdict"] = str(self.verdict)
@@ -88,6 +92,10 @@ class JudgeResult:
     mode: str = ""
     judge_time_s: float = 0.0
     extra: dict = field(default_factory=dict)
+    #: group -> a small input the submission fails (``Counterexample.to_json()``), or None when a
+    #: search ran for that group and found none; groups not searched are absent
+    #: (:mod:`grader.contest.counterexample`)
+    counterexamples: dict[str, dict | None] = field(default_factory=dict)
 
     @property
     def verdict(self) -> str:
@@ -114,7 +122,9 @@ class JudgeResult:
         return {
             "problem": self.problem, "submission": self.submission, "verdict": self.verdict,
             "score": self.score, "max_score": self.max_score, "mode": self.mode,
-            "groups": [{"name": g, "points": p, "passed": self.group_passed(g)} for g, p in self.group_points.items()],
+            "groups": [{"name": g, "points": p, "passed": self.group_passed(g),
+                        **({"counterexample": self.counterexamples[g]} if g in self.counterexamples else {})}
+                       for g, p in self.group_points.items()],
             "tests": [t.to_json() for t in self.tests], "judge_time_s": round(self.judge_time_s, 3),
             "sandbox": _sandbox_mechanism(), **self.extra,
         }
