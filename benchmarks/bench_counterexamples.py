@@ -70,7 +70,10 @@ def run(rows: list[Row], seconds: float, search: Callable, certify: Callable | N
     """Search each row's file (``search(problem, path, seconds=...)``, the counterexample API)."""
     for r in rows:
         t = time.monotonic()
-        cx = search(r.problem, r.path, seconds=seconds)
+        try:
+            cx = search(r.problem, r.path, seconds=seconds)
+        except Exception as e:  # a benchmark reports, it does not stop
+            cx, r.kind = None, f"error: {type(e).__name__}: {e}"
         r.seconds = round(time.monotonic() - t, 2)
         if cx is not None:
             r.found, r.size, r.verdict = True, cx.size, cx.verdict
@@ -82,7 +85,7 @@ def run(rows: list[Row], seconds: float, search: Callable, certify: Callable | N
                     cert = {"kind": f"error: {type(e).__name__}"}
             r.kind = cert["kind"] if cert else None
         print(f"  {r.problem:22s} {Path(r.path).name:32s} {r.group:7s} "
-              f"{'found ' + str(r.size) + ' ' + str(r.verdict) + ' ' + str(r.kind) if r.found else 'none'}"
+              f"{'found ' + str(r.size) + ' ' + str(r.verdict) + ' ' + str(r.kind) if r.found else (r.kind or 'none')}"
               f"  {r.seconds:.1f} s", file=out, flush=True)
     return rows
 

@@ -12,6 +12,7 @@ from __future__ import annotations
 import copy
 import json
 import math
+import sys
 from fractions import Fraction
 from pathlib import Path
 
@@ -216,3 +217,33 @@ def test_zoo_has_thirty_files_and_two_per_problem():
     problems = {p.id for p in __import__("grader").list_problems()}
     for problem in problems:
         assert sum(p.parent.name == problem for p in ZOO) >= 2, problem
+
+
+def test_counterexample_benchmark_counts_and_formats_with_a_fake_search():
+    import importlib.util
+    import io
+    from types import SimpleNamespace
+
+    spec = importlib.util.spec_from_file_location("bench_cx", Path(__file__).parents[2] / "benchmarks" / "bench_counterexamples.py")
+    bench = importlib.util.module_from_spec(spec)
+    sys.modules[spec.name] = bench
+    spec.loader.exec_module(bench)
+    rows = [bench.Row("emst", "a.py", "wrong"), bench.Row("emst", "b.py", "zoo"), bench.Row("emst", "c.py", "zoo"),
+            bench.Row("delaunay", "d.py", "zoo"), bench.Row("emst", "ok.py", "control")]
+    found = {"a.py": 4, "b.py": 12, "d.py": 3}
+
+    def search(problem, path, seconds):
+        n = found.get(path)
+        return None if n is None else SimpleNamespace(size=n, verdict="WA", certificate=None, input="i", answer="a")
+
+    bench.run(rows, 1.0, search, lambda p, i, a: {"kind": "differs" if p == "delaunay" else "cheaper-edge"},
+              out=io.StringIO())
+    s = bench.summarize(rows)
+    assert s["problems"]["emst"] | {"seconds": None} == {"files": 3, "found": 2, "small": 1, "certified": 2, "seconds": None}
+    assert s["total"]["small"] == 2 and s["total"]["files"] == 4 and s["controls"] == {"files": 1, "found": 0, "which": []}
+    text = bench.report(s)
+    assert "found with <= 10 points within the budget: 2/4 = 50%" in text
+    assert "1 searched, 0 found (expected 0)" in text
+    subjects = bench.subjects(["emst"])
+    assert {r.group for r in subjects} == {"wrong", "zoo", "control"}
+    assert any(r.path.endswith("wrong_double.cpp") and r.group == "wrong" for r in subjects)
