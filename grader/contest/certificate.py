@@ -55,11 +55,28 @@ def _reference(problem, args: list):
         return None
 
 
+_UNREADABLE = object()
+
+
+def _read_answer(checker, answer_text: str, args: list):
+    """The answer in the checker's form: the output text format, else the entry function's return
+    value as JSON (``null`` for None); ``_UNREADABLE`` when it is neither."""
+    try:
+        return checker.read_output(answer_text, args)
+    except Exception:
+        pass
+    try:
+        return checker.from_result(json.loads(answer_text), args)
+    except Exception:
+        return _UNREADABLE
+
+
 def certify(problem_id: str, input_text: str, answer_text: str) -> dict | None:
     """An exact certificate that ``answer_text`` is a wrong answer to ``input_text``, or None.
 
     ``problem_id`` names the problem (unknown -> ValueError); both texts are in the problem's
-    text formats (the statement's input and output). None when the checker accepts the answer, or
+    text formats (the statement's input and output; the answer may also be the entry function's
+    return value as JSON, e.g. ``null``). None when the checker accepts the answer, or
     when the answer cannot be read at all (the checker's message then says what is wrong with it).
     The certificate is JSON-native: ``problem``, ``kind`` (see :data:`KINDS`), ``claim`` (one
     sentence in plain words) and the indices and exact values the claim is about.
@@ -75,9 +92,8 @@ def certify(problem_id: str, input_text: str, answer_text: str) -> dict | None:
         args = checker.read_input(input_text)
     except Exception as e:
         raise ValueError(f"the input is not a {problem_id} input: {type(e).__name__}: {e}") from None
-    try:
-        answer = checker.read_output(answer_text, args)
-    except Exception:
+    answer = _read_answer(checker, answer_text, args)
+    if answer is _UNREADABLE:
         return None
     expected = _reference(problem, args)
     try:
@@ -145,7 +161,7 @@ def _draw(problem_id: str, cx: dict, cert: dict):
     problem = _problem(problem_id)
     checker = problem.checker
     args = checker.read_input(cx["input"])
-    answer = checker.read_output(cx["answer"], args)
+    answer = _read_answer(checker, cx["answer"], args)
     fig, axes = plt.subplots(figsize=(6, 6))
     try:
         checker.draw(axes, args, answer, _reference(problem, args))

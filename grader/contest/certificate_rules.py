@@ -31,7 +31,7 @@ KINDS = {
     "largest-empty-circle": ["point-in-circle", "centre-outside-hull", "larger-empty-circle", "differs"],
     "voronoi": ["vertex-nearer-other-site", "vertex-outside-box", "differs"],
     "proximity-network": ["not-gabriel-edge", "missing-gabriel-edge", "differs"],
-    "navmesh": ["differs"],
+    "navmesh": ["path-exists", "path-leaves-free-space", "outside-free-space", "shorter-path", "differs"],
     "obstacle-clearance": ["obstacle-too-close", "differs"],
     "dynamic-network": ["first-wrong-answer"],
 }
@@ -438,6 +438,29 @@ def obstacle_clearance(args, r, expected, reason) -> dict:
 
 
 def navmesh(args, path, expected, reason) -> dict:
+    """Decided exactly by :mod:`reference_impl.exact.free_space` (Fractions of the input doubles)."""
+    from reference_impl.exact import free_space
+
+    boundary, holes, start, goal = args
+    sound = expected is not None and free_space.path_problem(expected, boundary, holes) is None
+    if path is None and sound:
+        return {"kind": "path-exists", "path": expected,
+                "claim": f"the path {expected} goes from start to goal inside the closed free space (checked "
+                         "exactly), so the answer cannot be None."}
+    if path:
+        problem = free_space.path_problem(path, boundary, holes)
+        if problem:
+            return {"kind": "path-leaves-free-space", "claim": problem + " (checked exactly)."}
+    if path is not None and expected is None:
+        for name, p in (("start", start), ("goal", goal)):
+            if not free_space.point_in_free_space(p, boundary, holes):
+                return {"kind": "outside-free-space", "endpoint": name,
+                        "claim": f"the {name} {p} lies outside the closed free space (checked exactly): "
+                                 "the answer must be None."}
+    if path and sound and free_space.path_length(expected) < free_space.path_length(path):
+        return {"kind": "shorter-path", "path": expected,
+                "claim": f"the path {expected} stays in the free space (checked exactly) and has length "
+                         f"{free_space.path_length(expected):.9g} < your {free_space.path_length(path):.9g}."}
     return differs(reason, expected=expected)
 
 

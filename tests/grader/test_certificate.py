@@ -169,7 +169,16 @@ def test_obstacle_dynamic_and_navmesh():
     args = nav.checker.read_input(test.input_text)
     if nav.generator.solve(*args) is not None:
         c = certify("navmesh", test.input_text, nav.checker.write_output(None))
-        assert c["kind"] == "differs" and c["claim"]
+        assert c["kind"] == "path-exists" and c["path"][0] == [float(v) for v in args[2]]
+    room = [[[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [0.0, 4.0]], [[[1.0, 1.0], [3.0, 1.0], [3.0, 3.0], [1.0, 3.0]]],
+            [0.5, 2.0], [3.5, 2.0]]
+    inp, ans = text("navmesh", room, [[0.5, 2.0], [3.5, 2.0]])
+    through = certify("navmesh", inp, ans)
+    assert through["kind"] == "path-leaves-free-space"
+    detour = [[0.5, 2.0], [0.5, 0.5], [3.5, 0.5], [3.5, 2.0]]
+    longer = certify("navmesh", inp, text("navmesh", room, detour)[1])
+    assert longer["kind"] == "shorter-path"
+    assert sum(math.dist(p, q) for p, q in zip(longer["path"], longer["path"][1:])) < 1.5 + 3 + 1.5
 
 
 def test_bad_arguments_and_unreadable_answers():
@@ -247,3 +256,11 @@ def test_counterexample_benchmark_counts_and_formats_with_a_fake_search():
     subjects = bench.subjects(["emst"])
     assert {r.group for r in subjects} == {"wrong", "zoo", "control"}
     assert any(r.path.endswith("wrong_double.cpp") and r.group == "wrong" for r in subjects)
+
+
+def test_an_answer_given_as_the_entry_functions_json_is_read_too():
+    inp, _ = text("closest-pair", [[[0.0, 0.0], [5.0, 0.0], [0.0, 1.0]]], [0, 1])
+    assert certify("closest-pair", inp, "[0, 1]")["closer"] == [0, 2]
+    room = [[[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [0.0, 4.0]], [], [4.0, 3.0], [4.0, 3.0]]
+    c = certify("navmesh", text("navmesh", room, None)[0], "null")
+    assert c["kind"] == "path-exists" and c["path"] == [[4.0, 3.0]]
