@@ -264,3 +264,15 @@ def test_an_answer_given_as_the_entry_functions_json_is_read_too():
     room = [[[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [0.0, 4.0]], [], [4.0, 3.0], [4.0, 3.0]]
     c = certify("navmesh", text("navmesh", room, None)[0], "null")
     assert c["kind"] == "path-exists" and c["path"] == [[4.0, 3.0]]
+
+
+@pytest.mark.slow
+def test_a_found_counterexample_gets_a_certificate_that_checks():
+    from grader.contest.counterexample import search
+
+    cx = search("emst", "solutions/emst/wrong_collinear_sort_x.py", seconds=20)
+    assert cx is not None and cx.size <= 10
+    cert = certify("emst", cx.input, cx.answer)
+    assert cert["kind"] == "cheaper-edge"
+    verdict = check_certificate({**cx.to_json(), "certificate": cert}, draw=False, problem="emst")
+    assert verdict.startswith("checked exactly (emst, cheaper-edge)")
