@@ -72,10 +72,15 @@ class Counterexample:
 
 
 def _certificate(problem_id: str, input_text: str, answer_text: str) -> dict | None:
-    """An exact certificate that ``answer_text`` is wrong for ``input_text``, or None.
-
-    ``grader.contest.certificate.certify(problem_id, input_text, answer_text)`` plugs in here."""
-    return None
+    """An exact certificate that ``answer_text`` is wrong for ``input_text``
+    (:func:`grader.contest.certificate.certify`), or None: for a problem it has no rules for (a
+    course's own), an answer it cannot read, or a fault of its own (feedback never crashes a
+    grading for want of a certificate)."""
+    from .certificate import certify   # its rules load only when a counterexample is found
+    try:
+        return certify(problem_id, input_text, answer_text)
+    except Exception:  # noqa: BLE001 - an unknown problem (ValueError) or a fault: no certificate
+        return None
 
 
 def size_of(case: dict) -> int:

@@ -62,6 +62,11 @@ def test_a_wrong_solution_gets_a_small_counterexample_in_the_json_and_the_table(
     assert with_cx and all(not g["passed"] for g in with_cx)
     assert {"input", "answer", "reason", "certificate", "seconds", "verdict", "size"} <= set(with_cx[0]["counterexample"])
     json.dumps(result.to_json())  # JSON-native
+    # the certificate is exact and the student's helper recomputes it from input and answer
+    cert = with_cx[0]["counterexample"]["certificate"]
+    assert cert is not None and cert["kind"] == "closer-pair", cert
+    from grader import check_certificate
+    assert "closer" in check_certificate(with_cx[0]["counterexample"], draw=False)
     assert stress_mod.normalized(found.input) not in {stress_mod.normalized(t.input_text) for t in problem.tests()}
     table = format_table(result)
     assert "a small input your program also gets wrong" in table and found.input.rstrip("\n") in table
