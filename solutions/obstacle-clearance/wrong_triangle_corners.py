@@ -3,11 +3,10 @@ goal measured only to the corners of the Delaunay triangle they lie in.
 
 The shortcut: "the triangle that holds the start is empty, so its nearest obstacle is one of the
 triangle's corners". The nearest obstacle of a point is the site of the Voronoi cell it lies in,
-which need not be a corner of its Delaunay triangle: in the flat triangle (0, 0), (10, 0), (5, 1)
-with (5, -1) and (5, 30) around it, the start (5, 0.1) is 0.9 from (5, 1) but only 1.1 from
-(5, -1); a start at (5, 0.9) in the triangle above an obstacle (5, -0.2) just below the long edge...
-(any point in a Delaunay triangle whose circumcircle reaches past its long edge). Outside the
-hull every obstacle is measured.
+which need not be a corner of its Delaunay triangle: across the long edge of an obtuse triangle the
+cell of its far corner reaches into the next triangle. With obstacles (0, 0), (10, 0), (5, 2) and
+(5, -14) the start (5, -0.5) lies in the triangle (0, 0), (5, -14), (10, 0), 5.02 from its nearest
+corner but only 2.5 from (5, 2). Outside the hull every obstacle is measured.
 
 Killed by: degenerate
 
