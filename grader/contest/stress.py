@@ -2,7 +2,10 @@
 
 The tool competitive programmers use to find their bug. Inputs come smallest first: the problem's
 ``exhaustive`` group (every configuration of a few lattice points, :mod:`grader.problems.smallcases`, and
-the group's hand-made cases), then random small inputs that grow with time. Each input is checked
+the group's hand-made cases), then random small inputs that grow with time (:func:`random_case`:
+uniform lattice points, and families aimed at shortcuts the lattice misses: columns whose close
+pairs lie far apart in sorted order, rooms listed from every corner, walls with a tiny dip, starts
+whose nearest obstacle is not a corner of their Delaunay triangle). Each input is checked
 by the problem's input validators, answered by the reference (the generator's ``solve``), and
 FILE's answer is judged in the sandbox by the problem's checker, 48 inputs per sandboxed run.
 
