@@ -38,7 +38,7 @@ import sys
 import time
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Callable, Iterator
+from typing import Callable, Collection, Iterator
 
 from ..problems import smallcases
 from .judge import Judge
@@ -66,6 +66,7 @@ class Failure:
     shrunk: bool = True
     flukes: int = 0
     slow: int = 0
+    answer: str = ""  #: the submission's answer on ``input_text`` (text, capped; empty after a crash)
 
 
 @dataclass
@@ -78,6 +79,8 @@ class Stats:
     flukes: int = 0
     slow: int = 0
     unconfirmed: int = 0
+    excluded: int = 0  #: inputs never judged: equal to an excluded input (a test of the problem)
+    other: int = 0  #: failures alone with a verdict the search does not report (``verdicts``)
 
 
 def _valid(problem: Problem, text: str) -> bool:
@@ -115,6 +118,24 @@ def _test(problem: Problem, case: dict, name: str) -> TestCase | None:
     except Exception:  # a random case the generator or the reference refuses: not an input
         return None
     return TestCase(name, "stress", text, answer)
+
+
+def normalized(text: str) -> str:
+    """``text`` with its layout and number spellings made canonical, to compare inputs
+    (``1``, ``1.0`` and ``1e0`` read the same; so do any runs of blanks and newlines).
+
+    >>> normalized("2\\n0 1.0\\n  3 4\\n") == normalized("2 0.0e0 1 3 4")
+    True
+    >>> normalized("2\\n0 1\\n") == normalized("2\\n1 0\\n")
+    False
+    """
+    out = []
+    for token in text.split():
+        try:
+            out.append(repr(float(token)))
+        except ValueError:
+            out.append(token)
+    return " ".join(out)
 
 
 def _random_points(rng: random.Random, n: int, span: int, dim: int = 2) -> list[list[int]]:
@@ -271,16 +292,21 @@ class _Runner:
     """Judges lists of cases with the submission, many per sandboxed run, and confirms each
     failure by judging its input again alone; nothing starts after the deadline."""
 
-    def __init__(self, problem: Problem, path: Path, deadline: float, stats: Stats):
+    def __init__(self, problem: Problem, path: Path, deadline: float, stats: Stats,
+                 exclude: frozenset[str] = frozenset(), verdicts: frozenset[Verdict] | None = None,
+                 max_chars: int | None = None, trusted: bool | None = None):
         problem = copy.copy(problem)               # the caller's problem keeps its tests
         problem.__dict__["_tests"] = []            # no hidden tests: ours are set per batch
         self.problem = problem
         self.judge = Judge(problem, hide=[str(path.resolve().parent)], stop_at_first_failure=True,
-                           stderr_lines=STDERR_LINES)
+                           stderr_lines=STDERR_LINES, trusted=trusted)
         self.judge.keep_build = True  # a compiled submission is compiled once for the whole search
         self.sub = Submission.from_path(path, follow_links=True)
         self.deadline = deadline
         self.stats = stats
+        self.exclude = exclude  #: normalized inputs never judged (:func:`normalized`)
+        self.verdicts = verdicts  #: the failures to report (None: every failure but TLE)
+        self.max_chars = max_chars  #: inputs longer than this are never judged (None: any length)
 
     def _judge(self, tests: list[TestCase]) -> list[TestResult]:
         """Judge ``tests`` in one sandboxed run (one idle budget; none starts after the deadline)."""
@@ -304,6 +330,8 @@ class _Runner:
             self.stats.flukes += 1
         elif r.verdict == Verdict.TLE:
             self.stats.slow += 1       # slow, not wrong: never a counterexample
+        elif self.verdicts is not None and r.verdict not in self.verdicts:
+            self.stats.other += 1
         else:
             return r
         return None
@@ -317,7 +345,10 @@ class _Runner:
             if time.monotonic() >= self.deadline:
                 break
             t = _test(self.problem, case, f"stress/{self.stats.tried + len(tests) + 1}")
-            if t is not None:
+            if t is not None and ((self.max_chars is not None and len(t.input_text) > self.max_chars)
+                                  or (self.exclude and normalized(t.input_text) in self.exclude)):
+                self.stats.excluded += 1
+            elif t is not None:
                 tests.append((case, t))
         while tests and time.monotonic() < self.deadline:
             results = self._judge([t for _, t in tests])
@@ -335,11 +366,20 @@ class _Runner:
 
 
 def stress(problem_id: str | Problem, path: str | Path, seconds: float = 10.0, seed: int = 1,
-           log: Callable[[str], None] = lambda s: None, stats: Stats | None = None) -> Failure | None:
+           log: Callable[[str], None] = lambda s: None, stats: Stats | None = None,
+           first: list[dict] | None = None, exclude: Collection[str] = (),
+           verdicts: Collection[Verdict] | None = None, max_chars: int | None = None,
+           trusted: bool | None = None) -> Failure | None:
     """Search for a failing input of ``path`` on ``problem_id`` (an id or a loaded problem) for
     ``seconds``; the smallest failure found that fails alone too (shrunk as far as the time
     allows), or None. Ends within ``seconds`` plus one test's limits. ``stats`` (if given) receives
-    the counts of the search: inputs judged, flukes, inputs only slow, failures left unconfirmed."""
+    the counts of the search: inputs judged, flukes, inputs only slow, failures left unconfirmed.
+
+    The engine of :mod:`grader.contest.counterexample` too: ``first`` replaces the first cases
+    (default :func:`_first_cases`), an input whose :func:`normalized` text is in ``exclude`` is
+    never judged (nor reported, nor kept while shrinking), nor one longer than ``max_chars``
+    characters, and with ``verdicts`` only a failure with one of them counts (TLE never does).
+    ``trusted``: as :class:`grader.contest.judge.Judge`'s."""
     problem = load_problem(problem_id) if isinstance(problem_id, str) else problem_id
     if problem.generator_path is None or not problem.generator_path.is_file():
         raise ValueError(f"problem {problem.id!r}: stress needs the problem's generator (the reference answers)")
@@ -348,18 +388,19 @@ def stress(problem_id: str | Problem, path: str | Path, seconds: float = 10.0, s
         raise ValueError(f"submission file {path} does not exist")
     stats = stats if stats is not None else Stats()
     deadline = time.monotonic() + seconds
-    runner = _Runner(problem, path, deadline, stats)
+    runner = _Runner(problem, path, deadline, stats, frozenset(exclude),
+                     None if verdicts is None else frozenset(verdicts), max_chars, trusted)
     try:
-        return _search(problem, runner, stats, deadline, seed, log)
+        return _search(problem, runner, stats, deadline, seed, log, first)
     finally:
         runner.judge.drop_build()
 
 
 def _search(problem: Problem, runner: _Runner, stats: Stats, deadline: float, seed: int,
-            log: Callable[[str], None]) -> Failure | None:
+            log: Callable[[str], None], first: list[dict] | None = None) -> Failure | None:
     """The search of :func:`stress` with its runner."""
     rng = random.Random(seed)
-    pending = _first_cases(problem)
+    pending = _first_cases(problem) if first is None else list(first)
     found = None
     size = 2
     while found is None and time.monotonic() < deadline:
@@ -380,7 +421,7 @@ def _search(problem: Problem, runner: _Runner, stats: Stats, deadline: float, se
             break
         case, test, result = smaller
     return Failure(case, test.input_text, str(result.verdict), result.message, stats.tried, stderr=result.stderr,
-                   shrunk=shrunk, flukes=stats.flukes, slow=stats.slow)
+                   shrunk=shrunk, flukes=stats.flukes, slow=stats.slow, answer=result.answer)
 
 
 def _first_cases(problem: Problem) -> list[dict]:
