@@ -95,12 +95,27 @@ def _cmd_judge(a: argparse.Namespace) -> int:
         raise ValueError(f"submission file {path} does not exist")
     judge = Judge(a.problem, hide=[str(path.resolve().parent)], trusted=True if a.trusted else None)
     result = judge.judge_path(path, follow_links=True)  # the file named on the command line
+    if a.counterexample_seconds != 0:  # a failing group: a small input of the grader's own the file fails too
+        from .contest.counterexample import attach
+
+        attach(result, judge.problem, path, a.counterexample_seconds, trusted=True if a.trusted else None)
     if a.report:
         from .contest.report import write_report
 
         write_report(result, a.report, judge.problem)
     print(json.dumps(result.to_json(), indent=1) if a.json else format_table(result) + "\n" + judged_in())
     return 0 if result.verdict == "AC" else 1
+
+
+def _seconds(text: str) -> float:
+    """A number of seconds from 0 to 600 (an argparse type)."""
+    try:
+        value = float(text)
+    except ValueError:
+        value = -1.0
+    if not 0 <= value <= 600:
+        raise argparse.ArgumentTypeError(f"expected a number of seconds from 0 to 600, got {text!r}")
+    return value
 
 
 def judged_in() -> str:
@@ -125,10 +140,12 @@ def _cmd_grade(a: argparse.Namespace) -> int:
     if a.nbgrader:  # SUBMISSIONS is nbgrader's submitted/; results go into its gradebook
         from .course.nbgrader_autograde import grade_course
 
-        summaries = grade_course(a.problem, a.submissions, jobs=a.jobs, progress=None if a.quiet else sys.stderr)
+        summaries = grade_course(a.problem, a.submissions, jobs=a.jobs, progress=None if a.quiet else sys.stderr,
+                                 counterexample_seconds=a.counterexample_seconds)
     else:
         summaries = grade_class(a.problem, a.submissions, a.db, jobs=a.jobs, scheduler=a.scheduler, csv_path=a.csv,
-                                report_dir=a.reports, progress=not a.quiet, diff_path=a.diff)
+                                report_dir=a.reports, progress=not a.quiet, diff_path=a.diff,
+                                counterexample_seconds=a.counterexample_seconds)
     if a.similarity:
         _similarity(a.problem, a.submissions, a.reports or SIMILARITY_DIR, a.reference, a.boilerplate, a.threshold,
                     sys.stderr)
@@ -323,6 +340,9 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--trusted", action="store_true",
                    help="where no kernel jail can be built, judge without one (your own code only; the output "
                         "says 'judged in the trusted mode')")
+    p.add_argument("--counterexample-seconds", type=_seconds, default=None, metavar="N",
+                   help="when a group fails (WA, PE, RE), search small public inputs for one the file gets wrong "
+                        "for up to N seconds (0: no search; default: the problem's course.yaml, else 10)")
     p.set_defaults(func=_cmd_judge)
     p = sub.add_parser("grade", help="grade a class: SUBMISSIONS/<student>/<file>")
     p.add_argument("problem")
@@ -339,6 +359,10 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--similarity", action="store_true",
                    help=f"then write the class's similarity report (into --reports, else {SIMILARITY_DIR}/)")
     p.add_argument("--diff", help="write the diff of the students judged again (CSV) here")
+    p.add_argument("--counterexample-seconds", type=_seconds, default=None, metavar="N",
+                   help="after every score is stored, search up to N seconds per failing submission for a small "
+                        "input it gets wrong (0: none now; a later run searches those not done; default: the "
+                        "problem's course.yaml, else 10)")
     _similarity_options(p)
     p.set_defaults(func=_cmd_grade)
     p = sub.add_parser("regrade", help="judge students again on demand and show whose score moved and why",

@@ -273,7 +273,7 @@ class Progress:
 def grade_class(problem: str, root: str | Path, db_path: str | Path, jobs: int = 1, scheduler: str | None = None,
                 csv_path: str | Path | None = None, report_dir: str | Path | None = None,
                 progress: bool = True, regrade_students: list[str] | None = None,
-                diff_path: str | Path | None = None) -> list[dict]:
+                diff_path: str | Path | None = None, counterexample_seconds: float | None = 0.0) -> list[dict]:
     """Grade every student's submission for ``problem``; returns one summary dict per student.
 
     Only what changed is judged: new submissions, and the groups whose tests, checker or limits
@@ -281,7 +281,13 @@ def grade_class(problem: str, root: str | Path, db_path: str | Path, jobs: int =
     (``[]``: everyone) are judged again from scratch on demand. Every student judged again gets a
     diff (old score, new score, the groups that changed and why): printed on stderr, kept in the
     store and written to ``diff_path`` (CSV) when given; each summary of such a student has it
-    under ``"regrade"``."""
+    under ``"regrade"``.
+
+    After every score is stored (and the CSV written), the counterexample searches run for the
+    submissions that failed a group with WA, PE or RE and have none stored
+    (:mod:`grader.classroom.class_counterexamples`; ``counterexample_seconds``: each one's budget,
+    None: the problem's ``course.yaml`` (what ``python -m grader grade`` passes), 0 (the default
+    here): none)."""
     from . import regrade
 
     spec = load_problem(problem)  # also: a clear error for an unknown id
@@ -323,6 +329,7 @@ def grade_class(problem: str, root: str | Path, db_path: str | Path, jobs: int =
     summaries += [{"student": st, "verdict": "", "score": 0, "max_score": max_score, "skipped": NO_SUBMISSION}
                   for st in empty]
     hide = tuple(str(Path(p).resolve()) for p in (root, Path(db_path).parent, report_dir) if p)
+    t_grade = time.monotonic()
     require_jail()  # no kernel jail for this account: refuse once, with the fixes, not JE per student
     # materialise tests once in the parent, before workers race for it
     n_tests = len(Judge(problem).tests)
@@ -385,6 +392,9 @@ def grade_class(problem: str, root: str | Path, db_path: str | Path, jobs: int =
         store.export_csv(problem, csv_path)
         if empty:
             _add_empty_rows(csv_path, problem, empty, max_score)
+    t_grade = time.monotonic() - t_grade
+    store = _searches(spec, store, db_path, todo_all, jobs, report_dir, counterexample_seconds,
+                      progress, len(todo), t_grade)
     if report_dir:
         from ..contest.report import write_index
 
@@ -394,6 +404,26 @@ def grade_class(problem: str, root: str | Path, db_path: str | Path, jobs: int =
         write_index(Path(report_dir), problem, store, empty)
     store.close()
     return summaries
+
+
+def _searches(spec, store: ResultStore, db_path: str | Path, jobs_all: list[Job], jobs: int,
+              report_dir: str | Path | None, seconds: float | None, progress: bool, judged: int,
+              t_grade: float) -> ResultStore:
+    """The counterexample searches, after the scores (see :func:`grade_class`); the store reopened."""
+    from .class_counterexamples import pending, run_searches
+
+    budget = spec.counterexample_seconds if seconds is None else seconds
+    todo = pending(store, spec, {j.student: j.path for j in jobs_all}) if budget > 0 else []
+    if progress and judged:
+        print(f"{spec.id}: {judged} students judged in {t_grade:.1f} s ({t_grade / judged:.1f} s a student); "
+              f"scores stored", file=sys.stderr)
+    if not todo:
+        return store
+    store.close()  # the search workers are forked: none may inherit an open SQLite connection
+    say = (lambda line: print(line, file=sys.stderr)) if progress else (lambda line: None)
+    run_searches(spec.id, todo, db_path, budget, jobs, report_dir, say=say, initializer=_die_with_parent,
+                 initargs=(os.getpid(),))
+    return ResultStore(db_path)
 
 
 def _graded_summary(student: str, row, max_score: int) -> dict:
@@ -418,6 +448,9 @@ def _rebuild_missing_reports(spec, jobs: list[Job], store: ResultStore, report_d
             continue
         prior = store.prior(j.student, spec.id, j.sha)
         result = JudgeResult(spec.id, j.path, [prior[t.name] for t in spec.tests() if t.name in prior], spec.group_points)
+        stored = store.counterexamples(j.student, spec.id, j.sha)
+        if stored is not None:
+            result.counterexamples, result.extra["counterexample_search"] = stored
         write_report(result, path, spec, student=j.student)
         n += 1
     return n

@@ -13,6 +13,7 @@ Example:
 from __future__ import annotations
 
 import csv
+import json
 import sqlite3
 import time
 from pathlib import Path
@@ -37,6 +38,9 @@ CREATE TABLE IF NOT EXISTS timed (
 CREATE TABLE IF NOT EXISTS regrades (
     problem TEXT, student TEXT, old_sha TEXT, new_sha TEXT, old_score REAL, new_score REAL, old_verdict TEXT,
     new_verdict TEXT, changes TEXT, started_at REAL, done INTEGER DEFAULT 0, PRIMARY KEY (problem, student, new_sha));
+CREATE TABLE IF NOT EXISTS counterexamples (
+    student TEXT, problem TEXT, sha TEXT, groups TEXT, search TEXT, seconds REAL, searched_at REAL,
+    PRIMARY KEY (student, problem, sha));
 """
 
 
@@ -95,6 +99,27 @@ class ResultStore:
         self.db.execute("UPDATE submissions SET status='done', verdict=?, score=?, max_score=?, multiplier=?, note=? "
                         "WHERE student=? AND problem=? AND sha=?",
                         (result.verdict, result.score, result.max_score, multiplier, note, student, problem, sha))
+
+    def add_counterexamples(self, student: str, problem: str, sha: str, result: JudgeResult) -> None:
+        """Keep the counterexample search of a judged submission (``result.counterexamples`` and
+        ``result.extra["counterexample_search"]``, :mod:`grader.contest.counterexample`)."""
+        search = result.extra.get("counterexample_search") or {}
+        self.db.execute("INSERT OR REPLACE INTO counterexamples VALUES (?,?,?,?,?,?,?)",
+                        (student, problem, sha, json.dumps(result.counterexamples), json.dumps(search),
+                         float(search.get("seconds", 0.0)), time.time()))
+
+    def counterexamples(self, student: str, problem: str, sha: str) -> tuple[dict, dict] | None:
+        """The stored search of a submission: (group -> counterexample or None, the search's
+        summary), or None when none was stored."""
+        row = self.db.execute("SELECT groups, search FROM counterexamples WHERE student=? AND problem=? AND sha=?",
+                              (student, problem, sha)).fetchone()
+        return None if row is None else (json.loads(row[0]), json.loads(row[1]))
+
+    def counterexample_seconds(self, problem: str) -> tuple[int, float]:
+        """How many searches are stored for ``problem`` and their total seconds."""
+        n, total = self.db.execute("SELECT COUNT(*), COALESCE(SUM(seconds), 0) FROM counterexamples WHERE problem=?",
+                                   (problem,)).fetchone()
+        return int(n), float(total)
 
     def is_done(self, student: str, problem: str, sha: str) -> bool:
         row = self.db.execute("SELECT status FROM submissions WHERE student=? AND problem=? AND sha=?",

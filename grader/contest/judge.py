@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import dataclasses
 import hashlib
+import json
 import os
 import shutil
 import sys
@@ -36,6 +37,7 @@ from ..judging.verdicts import JudgeResult, TestResult, Verdict
 
 PREVIEW_MAX_LINES = 24
 PRINTED_MAX_BYTES = 2000  #: function mode: a failing test's print() output shown up to this many bytes
+ANSWER_MAX_CHARS = 4000  #: a failing test's answer (``TestResult.answer``) kept up to this many characters
 _CE_TYPES = {"SyntaxError", "IndentationError", "TabError", "ImportError", "ModuleNotFoundError", "MissingEntry"}
 _cover_cache: dict[tuple[str, ...], list[str]] = {}
 
@@ -308,6 +310,28 @@ class Judge:
             r.received = answer
             r.hidden_message = hidden_feedback.for_checker("WA", message)
 
+    def _answer_text(self, value, parsed, function_mode: bool) -> str:
+        """A failing answer as the problem's output text (stdio: as printed; function mode: the
+        parsed answer written by the checker's ``write_output``, else the value as JSON), capped."""
+        if not function_mode:
+            text = value if isinstance(value, str) else str(value)
+        else:
+            text = ""
+            if parsed is not None:
+                try:
+                    with cpu_budget(self.check_cpu_s):
+                        text = self.problem.checker.write_output(parsed)
+                except Exception:  # noqa: BLE001 - a shape write_output does not take: JSON below
+                    text = ""
+            if not text:
+                try:
+                    text = json.dumps(value)
+                except (TypeError, ValueError):
+                    text = repr(value)
+        if len(text) > ANSWER_MAX_CHARS:
+            text = text[:ANSWER_MAX_CHARS] + f"\n... ({len(text) - ANSWER_MAX_CHARS} more characters not shown)"
+        return clean(text, ANSWER_MAX_CHARS + 80, newlines=True)
+
     def _run_one(self, box: Sandbox, worker: FunctionWorker | None, sub: Submission, k: int,
                  idle_left: float, time_limit: float | None = None, program: bool = False) -> tuple[TestResult, float]:
         """One test's result and the wall time the submission spent not computing in it
@@ -330,6 +354,8 @@ class Judge:
             r = TestResult(test.name, test.group, Verdict.JE, outcome.time_s, round(outcome.memory_mb, 1))
             if outcome.status == "ok":
                 self._check(r, outcome.value, args, expected, function_mode=worker is not None)
+                if r.verdict != Verdict.AC:
+                    r.answer = self._answer_text(outcome.value, r.received, function_mode=worker is not None)
             else:
                 r.verdict, r.message = _verdict_for(outcome)
                 r.hidden_message = hidden_feedback.for_run(str(r.verdict), outcome.message, outcome.where,

@@ -23,6 +23,7 @@ import base64
 import hashlib
 import html
 import io
+import json
 import re
 import textwrap
 import urllib.parse
@@ -110,7 +111,16 @@ def _picture(problem: Problem, result: JudgeResult) -> str:
     if len(args[0]) > MAX_DRAW_POINTS:
         return ""
     expected = problem.read_answer(test, args) if test.answer_text else None
-    received, hidden_r = _capped(bad.received)
+    data, hidden_r = _png(problem, args, bad.received, expected, bad.name, bad.message)
+    note = " (orange: what the message names)" + (f"; {hidden_r:,} elements of the received answer not drawn" if hidden_r else "")
+    return (f'<h2>First failing test: {html.escape(bad.name)}{note}</h2>'
+            f'<img alt="expected vs received" src="data:image/png;base64,{data}">')
+
+
+def _png(problem: Problem, args: list, received: Any, expected: Any, name: str, message: str) -> tuple[str, int]:
+    """The checker's ``draw`` of expected vs received as base64 PNG, and how many received
+    elements were not drawn."""
+    received_capped, hidden_r = _capped(received)
     expected, hidden_e = _capped(expected)
     import matplotlib
 
@@ -119,21 +129,49 @@ def _picture(problem: Problem, result: JudgeResult) -> str:
 
     fig, axes = plt.subplots(1, 2, figsize=(10, 4.8))
     try:
-        draw(axes, args, received, expected)
+        problem.checker.draw(axes, args, received_capped, expected)
         for ax, hidden in ((axes[0], hidden_e), (axes[1], hidden_r)):
             if hidden:
                 ax.text(0.5, -0.08, f"{hidden:,} more not drawn", transform=ax.transAxes, ha="center", fontsize=8)
         if isinstance(args[0], list) and all(isinstance(p, (list, tuple)) and len(p) >= 2 for p in args[0]):
-            _highlight(axes[1], args[0], _hint(problem, bad.message, args, bad.received))
-        fig.suptitle(caption(bad.name, bad.message.split("\n--- ")[0]), fontsize=8)
+            _highlight(axes[1], args[0], _hint(problem, message, args, received))
+        fig.suptitle(caption(name, message.split("\n--- ")[0]), fontsize=8)
         buf = io.BytesIO()
         fig.savefig(buf, format="png", dpi=90, bbox_inches="tight")
     finally:
         plt.close(fig)
-    data = base64.b64encode(buf.getvalue()).decode()
-    note = " (orange: what the message names)" + (f"; {hidden_r:,} elements of the received answer not drawn" if hidden_r else "")
-    return (f'<h2>First failing test: {html.escape(bad.name)}{note}</h2>'
-            f'<img alt="expected vs received" src="data:image/png;base64,{data}">')
+    return base64.b64encode(buf.getvalue()).decode(), hidden_r
+
+
+def _counterexample(problem: Problem, result: JudgeResult) -> str:
+    """The section on the counterexample search (:mod:`grader.contest.counterexample`): the small
+    input, the submission's answer, why it is wrong, and a picture of it (when the checker draws
+    and the answer reads back); or that the search found none."""
+    found = {g: c for g, c in result.counterexamples.items() if c}
+    if not result.counterexamples:
+        return ""
+    if not found:
+        note = (result.extra.get("counterexample_search") or {}).get("note", "")
+        return f"<h2>Counterexample search</h2><p>{html.escape(note or 'no failing input found')}</p>"
+    cx = next(iter(found.values()))
+    picture = ""
+    chk = problem.checker
+    if getattr(chk, "draw", None) is not None and cx["verdict"] == "WA" and problem.generator_path is not None:
+        try:
+            args = chk.read_input(cx["input"])
+            received = chk.read_output(cx["answer"], args)
+            expected = chk.read_output(chk.write_output(problem.generator.solve(*args)), args)
+            data, _ = _png(problem, args, received, expected, "counterexample", cx["reason"])
+            picture = f'<img alt="expected vs your answer" src="data:image/png;base64,{data}">'
+        except Exception:  # noqa: BLE001 - an answer that does not read back as output text: no picture
+            picture = ""
+    cert = (f"<p>certificate:</p><pre>{html.escape(json.dumps(cx['certificate'], indent=1))}</pre>"
+            if cx.get("certificate") else "")
+    return (f"<h2>A small input your program also gets wrong ({html.escape(cx['verdict'])}; groups "
+            f"{html.escape(', '.join(found))})</h2><p>Found in {cx['seconds']:.1f} s among small public inputs; "
+            f"it is not a test of the problem.</p><pre>{html.escape(cx['input'])}</pre><p>your answer:</p>"
+            f"<pre>{html.escape(cx['answer'] or '(nothing)')}</pre><p>why: {html.escape(cx['reason'])}</p>"
+            f"{cert}{picture}")
 
 
 def _measure(t, value: float, fmt: str) -> str:
@@ -159,7 +197,7 @@ def render(result: JudgeResult, problem: Problem, student: str = "") -> str:
 </head><body><h1>{html.escape(problem.title)}{who}</h1>
 <p>Verdict: <b>{result.verdict}</b> ({DESCRIPTIONS.get(result.verdict, '')}); score <b>{result.score}/{result.max_score}</b>;
 mode: {html.escape(result.mode)}; submission: {html.escape(Path(result.submission).name)}</p>
-<ul>{groups}</ul>{_picture(problem, result)}
+<ul>{groups}</ul>{_picture(problem, result)}{_counterexample(problem, result)}
 <h2>Tests</h2><table><tr><th>test</th><th>verdict</th><th>time (s)</th><th>memory (MB)</th><th>message</th></tr>{rows}</table>
 </body></html>"""
 

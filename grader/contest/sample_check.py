@@ -103,6 +103,26 @@ def table_html(result: JudgeResult) -> str:
             f"<table><tr><th>test</th><th>verdict</th><th>time</th><th>message</th></tr>{rows}</table>")
 
 
+def search_samples(problem_id: str, result: JudgeResult, path: Path, seconds: float | None = None) -> str:
+    """When a sample failed with WA, PE or RE: a small input of the grader's own that ``path``
+    also gets wrong (:mod:`grader.contest.counterexample`, public families only, within the
+    problem's budget or ``seconds``), as HTML; a note when none was found or none can be searched
+    here (a copy of the problems without the reference answers); "" when no sample failed so."""
+    from .counterexample import attach, failing_groups
+
+    if not failing_groups(result):
+        return ""
+    problem = load_problem(problem_id)
+    cx = attach(result, problem, path, seconds, trusted=True)
+    search = result.extra.get("counterexample_search") or {}
+    if cx is None:
+        note = search.get("note") or "none found" if search else "off for this problem"
+        return f"<p>counterexample search: {html.escape(note)}</p>"
+    return (f"<p>a small input your code also gets wrong ({html.escape(cx.verdict)}, {cx.size} elements, found in "
+            f"{cx.seconds:.1f} s):</p><pre>{html.escape(cx.input)}</pre><p>your answer:</p>"
+            f"<pre>{html.escape(cx.answer or '(nothing)')}</pre><p>why: {html.escape(cx.reason)}</p>")
+
+
 def picture_png(problem: Problem, result: JudgeResult, entry_fn=None) -> bytes | None:
     """A picture of the first failing sample (the judge's copy of your answer) or, when all pass, of
     the first sample with ``entry_fn``'s answer (your function as this kernel has it)."""
@@ -170,11 +190,17 @@ def check_samples(line: str) -> None:
     entry_fn = ip.user_ns.get(problem.entry) if ip is not None and other is None else None
     png = picture_png(problem, result, entry_fn if callable(entry_fn) else None)
     if png:
-        img = f'<img alt="sample picture" src="data:image/png;base64,{base64.b64encode(png).decode()}">'
+        head += f'<img alt="sample picture" src="data:image/png;base64,{base64.b64encode(png).decode()}">'
         if shown is not None:
-            shown.update(HTML(head + img))
+            shown.update(HTML(head))
         else:
-            display(HTML(head + img))
+            display(HTML(head))
+    found = search_samples(problem_id, result, notebook)  # after the verdicts and the picture: it takes seconds
+    if found:
+        if shown is not None:
+            shown.update(HTML(head + found))
+        else:
+            display(HTML(found))
 
 
 def load_ipython_extension(ipython) -> None:

@@ -49,6 +49,7 @@ from ..contest.judge import Judge
 from ..problems import Problem, check_course, course_folder, load_problem, problems_root, using_course
 from ..classroom import regrade
 from ..classroom.regrade import fingerprints, version
+from ..classroom.class_counterexamples import pending, run_searches
 from ..classroom.store import ResultStore
 from ..judging.submissions import Submission, SubmissionError
 from ..judging.verdicts import DESCRIPTIONS, JudgeResult, TestResult, Verdict
@@ -140,7 +141,11 @@ def judge_notebook_file(problem_id: str, path: Path, student: str, store_path: P
     try:
         prior = store.prior(student, problem.id, key)
         if store.is_done(student, problem.id, key) and len(prior) == len(problem.tests()):
-            return JudgeResult(problem.id, str(path), [prior[t.name] for t in problem.tests()], problem.group_points)
+            result = JudgeResult(problem.id, str(path), [prior[t.name] for t in problem.tests()], problem.group_points)
+            stored = store.counterexamples(student, problem.id, key)  # searched after the class was judged
+            if stored is not None:
+                result.counterexamples, result.extra["counterexample_search"] = stored
+            return result
         _adopt_legacy(store, student, problem, code, key)
         fps = _fingerprints(problem)
         prev, changed = regrade.carry_over(store, student, problem, key.split("-")[0], key, fps)
@@ -175,11 +180,28 @@ def test_line(t: TestResult, hidden: bool, level: str = "message") -> str:
     return line
 
 
+def counterexample_text(cx: dict | None, searched: bool = True) -> list[str]:
+    """A group's counterexample as feedback lines (:mod:`grader.contest.counterexample`: an input
+    of the grader's own, never a test's): the input, the student's answer, why it is wrong.
+
+    >>> counterexample_text({"input": "2\\n0 0\\n1 1\\n", "answer": "0 1\\n", "reason": "not minimal",
+    ...                      "verdict": "WA", "size": 2, "seconds": 1.5, "certificate": None})[0]
+    'a small input your code also gets wrong (WA, 2 elements; not one of the tests):'
+    """
+    if cx is None:
+        return ["counterexample search: no failing input found among small public inputs"] if searched else []
+    indent = lambda text: ["    " + ln for ln in (text.rstrip("\n").splitlines() or ["(nothing)"])[:24]]  # noqa: E731
+    return [f"a small input your code also gets wrong ({cx['verdict']}, {cx['size']} elements; not one of the tests):",
+            *indent(cx["input"]), "  your answer:", *indent(cx["answer"]), f"  why: {cx['reason'][:300]}"]
+
+
 def group_output(result: JudgeResult, group: str, points: int, level: str = "message") -> dict:
     """The nbgrader output of a hidden group's test cell at a feedback ``level``: stdout when passed
-    (full points), an error when not."""
+    (full points), an error when not (with the group's counterexample, when a search ran)."""
     tests = [t for t in result.tests if t.group == group]
     lines = [test_line(t, hidden=True, level=level) for t in tests]
+    if group in result.counterexamples:
+        lines += counterexample_text(result.counterexamples[group])
     if result.group_passed(group):
         return nbformat.v4.new_output("stream", name="stdout",
                                       text=f"group {group}: all {len(tests)} tests accepted, {points}/{points} points\n"
@@ -337,20 +359,26 @@ def _judge_job(problem_id: str, student: str, path: str, store_path: str, hide: 
 
 
 def grade_course(problem_id: str, submitted: str | Path, jobs: int = 1, autograde: bool = True,
-                 progress: TextIO | None = None) -> list[dict]:
+                 progress: TextIO | None = None, counterexample_seconds: float | None = 0.0) -> list[dict]:
     """Judge every collected notebook ``submitted/<student>/<id>/<id>.ipynb`` in a pool of ``jobs``
     processes, then run ``nbgrader autograde`` (which finds the results stored and writes the same
     gradebook entries, autograded notebooks and late penalties as a one-by-one run).
 
     ``progress`` (a stream, e.g. ``sys.stderr``) gets a line per judged notebook and one around
     ``nbgrader autograde``. After autograde each summary also holds the gradebook's
-    ``gradebook_score`` (after the late penalty) and ``late_penalty`` (points taken off)."""
+    ``gradebook_score`` (after the late penalty) and ``late_penalty`` (points taken off).
+
+    Then, the gradebook written, the counterexample searches run for the notebooks that failed a
+    group with WA, PE or RE (:mod:`grader.classroom.class_counterexamples`; budget
+    ``counterexample_seconds``, None: the problem's ``course.yaml`` (what ``python -m grader grade
+    --nbgrader`` passes), 0 (the default here): none), each kept in the
+    store, and ``nbgrader autograde`` runs once more to put them in the feedback."""
     require_jail()
     submitted = Path(submitted).resolve()
     if not submitted.is_dir():
         raise ValueError(f"{submitted} is not a directory (expected nbgrader's submitted/<student>/{problem_id}/)")
     with using_course(submitted.parent, problem_id) as course_root:  # the course that submitted/ belongs to
-        return _grade_course(problem_id, submitted, course_root, jobs, autograde, progress)
+        return _grade_course(problem_id, submitted, course_root, jobs, autograde, progress, counterexample_seconds)
 
 
 def _say(progress: TextIO | None, text: str) -> None:
@@ -376,7 +404,7 @@ def gradebook_scores(course_root: Path, problem_id: str, students: list[str]) ->
 
 
 def _grade_course(problem_id: str, submitted: Path, course_root: Path, jobs: int, autograde: bool,
-                  progress: TextIO | None = None) -> list[dict]:
+                  progress: TextIO | None = None, counterexample_seconds: float | None = None) -> list[dict]:
     problem = _problem(problem_id)
     problem.tests()  # materialise the hidden tests once, before the workers start
     store_path = course_root / STORE_NAME
@@ -413,6 +441,16 @@ def _grade_course(problem_id: str, submitted: Path, course_root: Path, jobs: int
             if r["student"] in scores:
                 r["gradebook_score"], r["late_penalty"] = scores[r["student"]]
         _say(progress, f"{problem_id}: gradebook written ({len(scores)} submission(s))")
+    store = ResultStore(store_path)
+    try:
+        todo = pending(store, problem, {s: str(p) for s, p in collected})
+    finally:
+        store.close()
+    searched, _ = run_searches(problem_id, todo, store_path, counterexample_seconds, jobs,
+                               say=lambda line: _say(progress, line))
+    if searched and autograde:
+        _say(progress, f"{problem_id}: nbgrader autograde --force again: the counterexamples into the feedback")
+        run_nbgrader(course_root, "autograde", problem_id, "--force")
     return sorted(out, key=lambda s: s["student"])
 
 

@@ -23,6 +23,14 @@ The schema (every key optional; without a ``feedback:`` section, feedback is as 
       hidden: verdict          # every hidden group
       public: input            # every public group (the samples)
       groups: {large: message} # one group, by name (wins over the two above)
+      counterexample: true     # search small public inputs for one a failing submission gets wrong
+      counterexample_seconds: 10   # the search's budget per submission (seconds)
+
+The counterexample (:mod:`grader.contest.counterexample`) is not test data: the grader makes it
+from public generators and checks that it is no test's input, so it is shown for hidden groups
+too; ``counterexample: false`` (or ``counterexample_seconds: 0``) turns it off for the problem.
+:func:`counterexample_seconds` reads the two keys (a bad value is a ``ValueError`` naming the
+problem).
 
 A level that shows test data on a hidden group, an unknown level, key or group is a
 ``ValueError`` naming the problem. **Adding a level** (such as a small counterexample found by
@@ -53,7 +61,27 @@ LEVELS: dict[str, Level] = {lv.name: lv for lv in (
     Level("input", False, "also the failing input (public groups only)"),
 )}
 DEFAULT = "message"
-KEYS = ("hidden", "public", "groups")
+KEYS = ("hidden", "public", "groups", "counterexample", "counterexample_seconds")
+COUNTEREXAMPLE_SECONDS = 10.0  #: the search's default budget per submission
+
+
+def counterexample_seconds(problem: str, raw: object) -> float:
+    """The counterexample search's budget from course.yaml's ``feedback`` (0: off).
+
+    >>> counterexample_seconds("demo", None), counterexample_seconds("demo", {"counterexample": False})
+    (10.0, 0.0)
+    >>> counterexample_seconds("demo", {"counterexample_seconds": 2.5})
+    2.5
+    """
+    raw = raw if isinstance(raw, dict) else {}
+    on = raw.get("counterexample", True)
+    if not isinstance(on, bool):
+        raise ValueError(f"problem {problem!r}: course.yaml feedback counterexample must be true or false, got {on!r}")
+    seconds = raw.get("counterexample_seconds", COUNTEREXAMPLE_SECONDS)
+    if isinstance(seconds, bool) or not isinstance(seconds, (int, float)) or not 0 <= seconds <= 600:
+        raise ValueError(f"problem {problem!r}: course.yaml feedback counterexample_seconds must be a number of "
+                         f"seconds from 0 to 600, got {seconds!r}")
+    return float(seconds) if on else 0.0
 
 
 def _level(problem: str, where: str, value: object) -> str:

@@ -9,6 +9,7 @@ Example:
 
 from __future__ import annotations
 
+import json
 from dataclasses import asdict, dataclass, field
 from enum import Enum
 from typing import Any
@@ -61,10 +62,14 @@ class TestResult:
     hidden_message: str = ""
     received: Any = field(default=None, repr=False, compare=False)  #: a wrong answer, for reports only
     stderr: str = field(default="", repr=False)
+    #: a failing test's answer as the submission gave it, as text (capped; the counterexample
+    #: search shows it): not in JSON, not stored
+    answer: str = field(default="", repr=False, compare=False)
 
     def to_json(self) -> dict:
         d = asdict(self)
         d.pop("received")
+        d.pop("answer")
         if not self.stderr:
             d.pop("stderr")
         d["verdict"] = str(self.verdict)
@@ -88,6 +93,10 @@ class JudgeResult:
     mode: str = ""
     judge_time_s: float = 0.0
     extra: dict = field(default_factory=dict)
+    #: group -> a small input the submission fails (``Counterexample.to_json()``), or None when a
+    #: search ran for that group and found none; groups not searched are absent
+    #: (:mod:`grader.contest.counterexample`)
+    counterexamples: dict[str, dict | None] = field(default_factory=dict)
 
     @property
     def verdict(self) -> str:
@@ -114,7 +123,9 @@ class JudgeResult:
         return {
             "problem": self.problem, "submission": self.submission, "verdict": self.verdict,
             "score": self.score, "max_score": self.max_score, "mode": self.mode,
-            "groups": [{"name": g, "points": p, "passed": self.group_passed(g)} for g, p in self.group_points.items()],
+            "groups": [{"name": g, "points": p, "passed": self.group_passed(g),
+                        **({"counterexample": self.counterexamples[g]} if g in self.counterexamples else {})}
+                       for g, p in self.group_points.items()],
             "tests": [t.to_json() for t in self.tests], "judge_time_s": round(self.judge_time_s, 3),
             "sandbox": _sandbox_mechanism(), **self.extra,
         }
@@ -156,4 +167,29 @@ def format_table(result: JudgeResult) -> str:
         lines.append(f"{'first failure' if k == 0 else 'also failed'}: {t.name}: {t.message[:MESSAGE_SHOWN]}")
         if t.input_preview:
             lines.append("its input:\n" + t.input_preview.rstrip("\n"))
+    lines += counterexample_lines(result)
     return "\n".join(lines)
+
+
+CX_ANSWER_LINES = 12  #: the table shows this many lines of the answer to a counterexample
+
+
+def counterexample_lines(result: JudgeResult) -> list[str]:
+    """The table's lines about the counterexample search (:mod:`grader.contest.counterexample`):
+    the input, the submission's answer, why it is wrong; or that none was found."""
+    if not result.counterexamples:
+        return []
+    found = {g: c for g, c in result.counterexamples.items() if c}
+    if not found:
+        note = (result.extra.get("counterexample_search") or {}).get("note", "")
+        return ["", f"counterexample search: {note or 'no failing input found among small public inputs'}"]
+    cx = next(iter(found.values()))
+    answer = cx["answer"].rstrip("\n").splitlines() or ["(nothing)"]
+    if len(answer) > CX_ANSWER_LINES:
+        answer = answer[:CX_ANSWER_LINES] + [f"... ({len(answer) - CX_ANSWER_LINES} more lines)"]
+    out = ["", f"a small input your program also gets wrong ({cx['verdict']}, {cx['size']} elements; "
+               f"for {', '.join(found)}; found in {cx['seconds']:.1f} s, not a test of the problem):",
+           cx["input"].rstrip("\n"), "your answer:", *answer, f"why: {cx['reason'][:MESSAGE_SHOWN]}"]
+    if cx.get("certificate"):
+        out.append(f"certificate: {json.dumps(cx['certificate'])[:MESSAGE_SHOWN]}")
+    return out

@@ -200,6 +200,9 @@ class Problem:
     time_limits: dict[str, float] = field(default_factory=dict)
     #: group -> feedback level (course.yaml ``feedback``; :mod:`grader.judging.feedback_policy`)
     feedback: dict[str, str] = field(default_factory=dict)
+    #: the counterexample search's budget per failing submission, seconds (0: off; course.yaml
+    #: ``feedback: {counterexample, counterexample_seconds}``; :mod:`grader.contest.counterexample`)
+    counterexample_seconds: float = feedback_policy.COUNTEREXAMPLE_SECONDS
 
     @classmethod
     def load(cls, path: str | Path) -> "Problem":
@@ -230,6 +233,7 @@ class Problem:
             seed=int(course.get("seed", 0)), timed=dict(course.get("timed") or {}),
             time_limits=_time_limits(path.name, course.get("time_limits")),
             feedback=feedback_policy.resolve(path.name, course.get("feedback"), {g.name: g.public for g in groups}),
+            counterexample_seconds=feedback_policy.counterexample_seconds(path.name, course.get("feedback")),
         )
 
     def feedback_level(self, group: str) -> str:

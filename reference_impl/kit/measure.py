@@ -4,7 +4,8 @@ Run the examples:  python -m pytest reference_impl/kit/measure.py
 
 ``MeasurePanel(run, ns)`` calls ``run(n)``, which returns a dict of timings in
 seconds (one entry per contender, e.g. ``{"bowyer_watson": 0.8, "Delaunay": 0.01}``),
-and plots every measurement so far against n on log-log axes.  The legend gives
+and plots every measurement so far against n on log-log axes (drawn by the browser: the kernel
+sends the numbers, ``panels.js`` draws them; ``static_png`` is a matplotlib stand-in).  The legend gives
 the slope of a least-squares line through each contender's points: about 2 for
 a quadratic algorithm, a little above 1 for n log n.  ``time_call`` is the timer
 the lessons use (best of a few runs, ``time.perf_counter``).
@@ -19,14 +20,13 @@ from __future__ import annotations
 
 import html
 import time
-import warnings
 from typing import Any, Callable, Sequence
 
 import ipywidgets as widgets
 import numpy as np
 
-from .render import Canvas
-from .widget import KitWidget, button, png_image
+from .panels import PanelView, loglog_png
+from .widget import KitWidget, button
 
 __all__ = ["MeasurePanel", "time_call", "fit_exponent"]
 
@@ -73,11 +73,11 @@ class MeasurePanel(KitWidget):
             raise ValueError("MeasurePanel needs at least one n to measure")
         self.label = label
         self.results: dict[str, dict[int, float]] = {}
-        self.canvas = Canvas(*size)
+        self.size = (int(size[0]), int(size[1]))
         self.n = widgets.SelectionSlider(options=self.ns, value=self.ns[0], description="n")
         self.measure_button = button("measure", "play", "8em")
         self.all_button = button("measure all", "forward", "10em")
-        self.image = png_image(size[0])
+        self.image = PanelView(kind="loglog", width=self.size[0], height=self.size[1], title=label)
         self.table = widgets.HTML()
         super().__init__([widgets.HBox([self.n, self.measure_button, self.all_button]),
                           self.image, self.table])
@@ -112,34 +112,17 @@ class MeasurePanel(KitWidget):
         points = self.results[name]
         return fit_exponent(list(points), list(points.values()))
 
-    def _render(self) -> None:
-        with warnings.catch_warnings():   # log axes with a single value warn about singular limits
-            warnings.simplefilter("ignore", UserWarning)
-            self._plot()
-
-    def _plot(self) -> None:
-        ax = self.canvas.ax
-        ax.cla()
-        ax.set_xscale("log")
-        ax.set_yscale("log")
-        ax.set_xlabel("n")
-        ax.set_ylabel("seconds")
-        ax.set_title(self.label, fontsize=10)
+    def series(self) -> list[dict]:
+        """What the plot shows: per contender its n's, seconds and fitted slope (``None`` below two sizes)."""
+        out = []
         for name, points in self.results.items():
             ns = sorted(points)
-            legend = name
-            if len(ns) >= 2:
-                legend += f" (slope {self.slope(name):.2f})"
-            ax.plot(ns, [points[n] for n in ns], "o-", label=legend)
-        values = [t for points in self.results.values() for t in points.values() if t > 0]
-        if values and min(values) == max(values):     # one value: give the log axis some room
-            ax.set_ylim(values[0] / 3, values[0] * 3)
-        if self.results:
-            ax.legend(fontsize=8, loc="upper left")
-        else:
-            ax.text(0.5, 0.5, "press measure", transform=ax.transAxes, ha="center")
-        ax.set_position((0.14, 0.14, 0.82, 0.76))
-        self.image.value = self.canvas.png()
+            out.append({"name": name, "ns": ns, "ts": [points[n] for n in ns],
+                        "slope": self.slope(name) if len(ns) >= 2 else None})
+        return out
+
+    def _render(self) -> None:
+        self.image.series = self.series()
         rows = "".join(f"<tr><td>{html.escape(name)}</td>"
                        + "".join(f"<td>{points.get(n, float('nan')):.4g}</td>" for n in self.ns) + "</tr>"
                        for name, points in self.results.items())
@@ -148,7 +131,7 @@ class MeasurePanel(KitWidget):
                             if rows else "")
 
     def static_png(self) -> bytes:
-        return bytes(self.image.value)
+        return loglog_png(self.series(), self.label, self.size)
 
     def static_text(self) -> str:
         parts = []

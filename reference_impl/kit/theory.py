@@ -3,10 +3,11 @@ cavity turned around.
 
 Run the examples:  python -m pytest reference_impl/kit/theory.py
 
-Both are ``StepPlayer``s built on the teaching code: ``segment_player`` plays
+They are players built on the teaching code: ``segment_player`` plays
 ``teaching.segment.insert_segment`` (the crossed triangles found one by one, the two cavities, each
 new triangle with its empty circle), ``cavity_player`` turns the boundary of one 3D insertion's
-cavity (``teaching.cavity3d.cavity_3d``) around its vertical axis, and ``flip_angle_player`` shows
+cavity (``teaching.cavity3d.cavity_3d``) around its vertical axis (a ``Player3D``: the browser draws it
+and turns it), and ``flip_angle_player`` shows
 the six angles each of Lawson's flips (``teaching.theory.lawson``) takes away and puts back;
 ``star_player`` shows each insertion's new triangles (the new point's star) and their running mean.
 
@@ -31,6 +32,7 @@ from reference_impl.teaching.segment import SegmentInsertion, insert_segment
 from reference_impl.teaching.theory import angle_vector, lawson
 from reference_impl.validate import as_points
 
+from .canvas3d import Player3D
 from .player import StepPlayer
 from .render import COLORS, draw_circumcircle, draw_edges, draw_points, draw_triangles, fill_triangles, fit_bounds
 
@@ -138,11 +140,12 @@ def _canon(t) -> tuple[int, int, int]:
 
 
 def cavity_player(points, cavity: Cavity3D, *, turns: int = 12, title: str = "one 3D cavity, turning",
-                  **kwargs: Any) -> StepPlayer:
+                  **kwargs: Any) -> Player3D:
     """Turn the cavity's boundary faces (and the new point, red) around the vertical axis.
 
-    Each frame is a projection after turning by another 180 / ``turns`` degrees; the faces are
-    drawn back to front, half transparent, so the point is seen inside its cavity.
+    Each step turns it by another 180 / ``turns`` degrees; the browser draws the faces back to
+    front, half transparent, so the point is seen inside its cavity, and a drag or the arrow keys
+    turn it further (``canvas3d.Player3D``).
 
     >>> from reference_impl.teaching.cavity3d import cavity_3d
     >>> pts = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1), (0.2, 0.2, 0.2)]
@@ -153,32 +156,23 @@ def cavity_player(points, cavity: Cavity3D, *, turns: int = 12, title: str = "on
     P = as_points(points, dim=3)
     faces = np.asarray(cavity.boundary, dtype=np.int64).reshape(-1, 3)
     used = sorted({int(v) for v in faces.ravel()})
-    centre = P[used + [cavity.q]].mean(axis=0)
-    span = float(np.ptp(P[used], axis=0).max()) or 1.0
+    shown = used + [int(cavity.q)]                      # only the cavity's vertices and q are drawn
+    local = {v: k for k, v in enumerate(shown)}
+    F = np.vectorize(local.__getitem__, otypes=[np.int64])(faces) if len(faces) else faces
+    edges = sorted({tuple(sorted((int(t[i]), int(t[(i + 1) % 3])))) for t in F.tolist() for i in range(3)})
     angles = list(np.linspace(0, np.pi, max(1, int(turns)), endpoint=False))
 
-    def project(angle: float) -> tuple[np.ndarray, np.ndarray]:
-        c, s = np.cos(angle), np.sin(angle)
-        Q = (P - centre) / span @ np.array([[c, 0, -s], [0, 1, 0], [s, 0, c]]).T
-        return np.c_[Q[:, 0], 0.85 * Q[:, 1] + 0.3 * Q[:, 2]], Q[:, 2]
-
-    def draw(ax, angle: float, _k: int) -> None:
-        xy, depth = project(angle)
-        order = np.argsort(-depth[faces].mean(axis=1))          # far faces first
-        fill_triangles(ax, xy, faces[order], color=COLORS["bad"], alpha=0.25)   # drawn in that order
-        draw_triangles(ax, xy, faces, color=COLORS["edge"], linewidth=0.7)
-        draw_points(ax, xy[used], size=14)
-        draw_points(ax, xy[[cavity.q]], color=COLORS["new_point"], size=60)
+    def tets(k: int) -> str:
+        return f"{k} {'tetrahedron' if k == 1 else 'tetrahedra'}"
 
     def describe(angle: float) -> str:
-        def tets(k: int) -> str:
-            return f"{k} {'tetrahedron' if k == 1 else 'tetrahedra'}"
-
         return (f"turned {np.degrees(angle):.0f} degrees: {tets(len(cavity.bad))} bad, "
                 f"{len(faces)} boundary faces on {len(used)} vertices, {tets(len(cavity.new))} new")
 
-    return StepPlayer(angles, draw, describe=describe, bounds=(-0.75, -0.75, 0.75, 0.75), title=title,
-                      interval=kwargs.pop("interval", 400), **kwargs)
+    return Player3D(P[shown], faces=F, edges=edges, marks=[len(shown) - 1], angles=angles, describe=describe,
+                    title=title, depth_colors=False, interval=kwargs.pop("interval", 400),
+                    face_color=COLORS["bad"], face_alpha=0.25, edge_color=COLORS["edge"], lw=0.7,
+                    point_color=COLORS["point"], mark_color=COLORS["new_point"], **kwargs)
 
 
 @dataclass(frozen=True, eq=False)

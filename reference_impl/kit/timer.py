@@ -7,9 +7,9 @@ through its command line, exactly as a student in a terminal would:
 **start** runs ``python -m grader timed start PROBLEM STUDENT --db DB`` (the clock
 starts on the grader's side and a second start keeps the first time), **submit**
 runs ``python -m grader timed submit PROBLEM STUDENT PATH --db DB`` and shows the
-judge's report.  The countdown is redrawn every second by a ``Play`` ticker in
-the browser; without a browser the static picture shows the time left when the
-notebook was executed.
+judge's report.  The countdown is drawn by the browser (``panels.js``), which
+redraws it every second by itself: the kernel sends the deadline once.  Without a
+browser the static picture shows the time left when the notebook was executed.
 
 >>> import tempfile, pathlib
 >>> db = pathlib.Path(tempfile.mkdtemp()) / "exam.sqlite"
@@ -27,10 +27,9 @@ import time
 from pathlib import Path
 
 import ipywidgets as widgets
-from matplotlib.patches import Rectangle
 
-from .render import Canvas
-from .widget import KitWidget, button, png_image
+from .panels import PanelView, clock_png
+from .widget import KitWidget, button
 
 __all__ = ["TimedPractice", "format_clock"]
 
@@ -60,20 +59,18 @@ class TimedPractice(KitWidget):
         self.deadline: float | None = None
         self.duration_min: float | None = None
         self.report = ""
-        self.canvas = Canvas(*size)
+        self.size = (int(size[0]), int(size[1]))
         self.clock = widgets.HTML()
-        self.image = png_image(size[0])
-        self.ticker = widgets.Play(value=0, min=0, max=6 * 3600, step=1, interval=1000, description="clock",
-                                   layout=widgets.Layout(display="none"))
+        self.image = PanelView(kind="clock", width=self.size[0], height=self.size[1], title=problem,
+                               idle=f"{problem}: press start ({student})")
         self.start_button = button("start the clock", "clock-o", width="12em", button_style="primary")
         self.submit_button = button("submit to the judge", "gavel", width="14em", disabled=True)
         self.output = widgets.HTML()
-        super().__init__([widgets.HBox([self.start_button, self.submit_button, self.ticker]),
+        super().__init__([widgets.HBox([self.start_button, self.submit_button]),
                           self.clock, self.image, self.output])
         self.add_class("kit-timed-practice")
         self.start_button.on_click(self.guard(lambda _: self.start()))
         self.submit_button.on_click(self.guard(lambda _: self.submit()))
-        self.ticker.observe(self.guard(lambda _: self._render()), names="value")
         self._render()
 
     def _grader(self, *args: str) -> subprocess.CompletedProcess:
@@ -89,7 +86,6 @@ class TimedPractice(KitWidget):
         self.started_at, self.deadline = float(info["started_at"]), float(info["deadline"])
         self.duration_min = float(info["duration_min"])
         self.submit_button.disabled = False
-        self.ticker.playing = True
         self._render()
         return info
 
@@ -110,25 +106,26 @@ class TimedPractice(KitWidget):
         self._render()
         return self.report
 
-    def _render(self) -> None:
+    def _state(self) -> tuple[str, float, bool]:
+        """The clock's text, the share of the time used, whether it is up."""
         left = self.remaining()
-        ax = self.canvas.clear(bounds=(0, 0, 1, 1))
-        ax.set_aspect("auto")
-        ax.set_axis_off()
         if left is None:
-            text, frac = f"{self.problem}: press start ({self.student})", 0.0
-        else:
-            text = f"{self.problem}: {format_clock(left)}"
-            total = 60 * (self.duration_min or 30)
-            frac = min(1.0, max(0.0, 1 - left / total))
-        ax.add_patch(Rectangle((0.02, 0.15), 0.96, 0.3, fill=False, lw=1.5))
-        ax.add_patch(Rectangle((0.02, 0.15), 0.96 * frac, 0.3, color="#d62728" if left is not None and left < 0 else "#2a7f2a"))
-        ax.text(0.02, 0.75, text, fontsize=13, va="center")
-        self.image.value = self.canvas.png()
-        self.clock.value = f'<span class="kit-clock">{html.escape(text)}</span>'
+            return f"{self.problem}: press start ({self.student})", 0.0, False
+        total = 60 * (self.duration_min or 30)
+        return f"{self.problem}: {format_clock(left)}", min(1.0, max(0.0, 1 - left / total)), left < 0
+
+    def _render(self) -> None:
+        """Send the deadline (the page counts down by itself) and the text as it stands now."""
+        with self.image.hold_sync():
+            self.image.total = 60 * (self.duration_min or 30)
+            self.image.now = time.time()
+            self.image.deadline = -1.0 if self.deadline is None else self.deadline
+        due = ("" if self.deadline is None else
+               f"due at {time.strftime('%H:%M:%S', time.localtime(self.deadline))} (the bar below counts down)")
+        self.clock.value = f'<span class="kit-clock">{html.escape(due)}</span>'
 
     def static_png(self) -> bytes:
-        return bytes(self.image.value)
+        return clock_png(*self._state(), size=self.size)
 
     def static_text(self) -> str:
         left = self.remaining()

@@ -51,12 +51,12 @@ KIT_STATE = """
 def _kit_state():
     import hashlib, json
     from ipywidgets.widgets.widget import _instances
-    from reference_impl.kit import MeasurePanel, PointPicker, StepPlayer
+    from reference_impl.kit import MeasurePanel, Player3D, PointPicker, StepPlayer
     from reference_impl.kit.quiz import _Quiz   # PredictReveal and PredictRevealMany
     from reference_impl.kit.widget import KitWidget
     state = {"player": {}, "quiz": {}, "measure": {}, "picker": {}, "errors": []}
     for mid, w in list(_instances.items()):
-        if isinstance(w, StepPlayer):
+        if isinstance(w, (StepPlayer, Player3D)):
             state["player"][mid] = w.index
         elif isinstance(w, _Quiz):
             state["quiz"][mid] = bool(w.revealed)

@@ -251,6 +251,9 @@ def test_measure_panel_and_timed_practice_by_keys(page):
     page.keyboard.press("Enter")
     got = wait_kernel(page, "print(json.dumps(panel.results))", {"sum": {"10": 1e-05}})
     assert got == {"sum": {"10": 1e-05}}, got
+    plot = panel.locator("svg.kit-panel-picture[role='img']")          # drawn by the page from the numbers
+    plot.locator("path.kit-series").wait_for(state="attached", timeout=30_000)
+    assert plot.get_attribute("aria-label") == "log-log plot of the timings: sum: 1 sizes"
     practice = page.locator(".kit-timed-practice").first
     practice.scroll_into_view_if_needed()
     practice.get_by_role("button", name="start the clock").focus()
@@ -258,3 +261,10 @@ def test_measure_panel_and_timed_practice_by_keys(page):
     got = wait_kernel(page, "print(json.dumps(practice.remaining() is not None))", True, timeout=90)
     assert got is True
     assert kernel_says(page, "print(practice.submit_button.disabled)", "False", timeout=30) == "False"
+    clock = practice.locator("svg.kit-panel-picture[role='timer']")      # the page counts down by itself
+    page.wait_for_function("c => / left$/.test(c.getAttribute('aria-label'))", arg=clock.element_handle(),
+                           timeout=30_000)
+    draws = int(clock.get_attribute("data-draws"))
+    page.wait_for_function("([c, d]) => +c.dataset.draws >= d + 2", arg=[clock.element_handle(), draws],
+                           timeout=10_000)                              # two ticks, no kernel message
+    assert kernel(page, "print(json.dumps(practice.image.deadline > 0))") is True

@@ -42,6 +42,7 @@ def test_submit_before_start_is_refused_and_start_is_recorded(tmp_path):
     again = panel.start()                               # a second start keeps the first time
     assert again["started_at"] == info["started_at"]
     assert panel.static_png() != before                 # the picture shows the clock now
+    assert panel.image.deadline == info["deadline"] and panel.image.total == 30 * 60   # the page counts down
     assert "left" in panel.static_text()
     report = panel.submit()                             # no entry function: compile error, a verdict
     assert "CE" in report and "bowyer_watson" in report

@@ -416,14 +416,18 @@ def test_measure_panel_records_plots_and_fits_slopes():
         return {"square": (n / 100) ** 2, "linear": n / 100}
 
     panel = MeasurePanel(run, [100, 200, 400, 800], label="fake timings")
-    empty = bytes(panel.image.value)
+    assert panel.image.series == [] and panel.image.kind == "loglog"     # drawn by the page (panels.js)
+    empty = panel.static_png()
     panel.n.value = 200
     panel.measure_button.click()
     assert calls == [200] and panel.results["square"] == {200: 4.0}
     panel.measure_all()
     assert calls == [200, 100, 200, 400, 800]
     assert panel.slope("square") == pytest.approx(2.0) and panel.slope("linear") == pytest.approx(1.0)
-    assert bytes(panel.image.value) != empty
+    assert panel.static_png() != empty
+    shown = {s["name"]: s for s in panel.image.series}              # what the page plots
+    assert shown["square"]["ns"] == [100, 200, 400, 800] and shown["square"]["slope"] == pytest.approx(2.0)
+    assert shown["linear"]["ts"] == [1.0, 2.0, 4.0, 8.0]
     assert "slope 2.00" in panel._repr_mimebundle_()["text/plain"]
     bad = MeasurePanel(lambda n: None, [1])
     bad.measure_button.click()                              # a broken run() is reported in the log

@@ -269,3 +269,42 @@ def test_needles_include_every_form():
     assert {repr(x), x.hex()} <= needles(p) | {repr(x)[:3]}
     assert base64  # the encodings above are the submission's, not the test's
 
+
+
+@pytest.mark.parametrize("pid,entry", [("delaunay", "delaunay"), ("largest-empty-circle", "largest_empty_circle"),
+                                       ("navmesh", "shortest_path")])
+def test_a_counterexample_in_the_feedback_and_the_json_leaks_nothing(pid, entry, tmp_path):
+    """The counterexample search's input, answer and reason (grader/contest/counterexample.py) are
+    the grader's own small input: the feedback and ``--json`` with them hold no number of the
+    hidden tests, and the input is none of the problem's tests."""
+    from grader.contest.counterexample import attach, hidden_inputs
+    from grader.contest.stress import normalized
+
+    problem = hidden_only(pid)
+    path = tmp_path / "attack.py"
+    path.write_text(textwrap.dedent(LEAKY).replace("{entry}", entry).replace("MODE", MODES["repr"]))
+    result = Judge(problem, hide=[str(tmp_path)]).judge_path(path)
+    full = load_problem(pid)
+    found = attach(result, full, path, seconds=20)
+    assert found is not None and found.verdict == "RE", result.extra
+    assert normalized(found.input) not in hidden_inputs(full)
+    # the counterexample's own numbers (the submission prints them as hex, repr, ...) are its to show
+    own = " ".join(form for tok in found.input.split() for form in _forms(tok))
+    assert leaks(problem, json.dumps(result.to_json()["groups"]), own) == []
+    for level in HIDDEN_LEVELS:
+        with policy(problem, level):
+            feedback = notebook_feedback(problem, result)
+            assert "a small input your code also gets wrong" in feedback
+            assert leaks(problem, feedback, frame_of(problem, result) + own) == [], (level, feedback[:2000])
+
+
+def _forms(tok: str) -> set[str]:
+    """The forms of one number a message could use (as :func:`_numbers` lists them)."""
+    try:
+        f = float(tok)
+    except ValueError:
+        return set()
+    forms = {tok, repr(f), f.hex(), f"{f:.6g}", json.dumps(f)}
+    if f.is_integer() and abs(f) < 1e18:
+        forms.add(str(int(f)))
+    return forms

@@ -9,6 +9,10 @@ duplicates, scaled, ...) plus the kinds that are hard for proximity graphs:
   ``shape: triangles`` triangles whose two long sides differ by less than the rounding of their
   squared lengths: float lengths call them equal, exact arithmetic does not;
 * ``vertical``: a vertical line (``n``) plus a few points off it, the worst case of sweeps by x;
+* ``columns``: ``cols`` columns one apart, each of ``per`` points ten apart in y (integer
+  coordinates, a random shift of 0..4 in y per point): the short edges join neighbouring columns,
+  and ``per`` - 1 points lie between their ends in (x, y) order, so a window of a fixed size in
+  sorted order misses them;
 
 and, for every kind, ``offset`` (added to both coordinates after ``scale``, e.g. 1e9).
 ``solve(points)`` is the reference answer (``reference_impl``, grader side only): the EMST over
@@ -35,7 +39,7 @@ _spec = importlib.util.spec_from_file_location(
     "_delaunay_point_cases", Path(__file__).resolve().parents[2] / "delaunay" / "generators" / "generator.py")
 _points = importlib.util.module_from_spec(_spec)
 _spec.loader.exec_module(_points)
-KINDS = _points.KINDS + ("clusters", "near_ties", "vertical")
+KINDS = _points.KINDS + ("clusters", "near_ties", "vertical", "columns")
 
 
 def _points_for(case: dict, seed: int) -> list[list[float]]:
@@ -60,6 +64,11 @@ def _points_for(case: dict, seed: int) -> list[list[float]]:
     elif kind == "vertical":
         n = int(case.get("n", 100))
         pts = [(0.0, rng.random()) for _ in range(n)] + [(rng.random(), rng.random()) for _ in range(3)]
+    elif kind == "columns":
+        cols, per = int(case.get("cols", 2)), int(case.get("per", 10))
+        if cols < 1 or per < 1:
+            raise ValueError(f"columns: cols and per must be positive, got {cols} and {per}")
+        pts = [(float(c), 10.0 * k + rng.randint(0, 4)) for c in range(cols) for k in range(per)]
     else:
         return _points.generate({**case, "shuffle": False}, seed)
     return [[float(x), float(y)] for x, y in pts]
@@ -71,7 +80,7 @@ def generate(case: dict, seed: int) -> list[list[float]]:
         raise ValueError(f"unknown case kind {case.get('kind')!r}; expected one of {', '.join(KINDS)}")
     pts = _points_for(case, seed)
     scale, offset = float(case.get("scale", 1.0)), float(case.get("offset", 0.0))
-    if case.get("kind") in ("clusters", "near_ties", "vertical"):
+    if case.get("kind") in ("clusters", "near_ties", "vertical", "columns"):
         pts = [[x * scale, y * scale] for x, y in pts]
     if case.get("shuffle", True):
         random.Random(seed + 1).shuffle(pts)
