@@ -12,6 +12,7 @@ import os
 import subprocess
 import sys
 import textwrap
+from pathlib import Path
 
 
 def test_an_xdist_group_runs_on_one_worker(tmp_path):
@@ -35,3 +36,29 @@ def test_an_xdist_group_runs_on_one_worker(tmp_path):
     workers = log.read_text().split()
     assert len(workers) == 4
     assert len(set(workers)) == 1, f"one xdist_group ran on several workers: {workers}"
+
+
+def test_slow_tests_are_collected_first(tmp_path):
+    """The root conftest starts the tests marked ``slow`` first, the rest keeping their order."""
+    (tmp_path / "conftest.py").write_text(textwrap.dedent(f"""
+        import importlib.util
+        spec = importlib.util.spec_from_file_location("repo_conftest", {str(Path(__file__).parents[1] / "conftest.py")!r})
+        repo_conftest = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(repo_conftest)
+        pytest_collection_modifyitems = repo_conftest.pytest_collection_modifyitems
+    """))
+    (tmp_path / "test_order.py").write_text(textwrap.dedent("""
+        import pytest
+        def test_a(): pass
+        @pytest.mark.slow
+        def test_b(): pass
+        def test_c(): pass
+        @pytest.mark.slow
+        def test_d(): pass
+    """))
+    out = subprocess.run([sys.executable, "-m", "pytest", "--collect-only", "-q", "-p", "no:cacheprovider",
+                          "-p", "no:randomly", "--rootdir", str(tmp_path), "-W", "ignore::pytest.PytestUnknownMarkWarning",
+                          str(tmp_path)], cwd=tmp_path, capture_output=True, text=True, timeout=120)
+    assert out.returncode == 0, out.stdout + out.stderr
+    order = [ln.split("::")[-1] for ln in out.stdout.splitlines() if "::test_" in ln]
+    assert order == ["test_b", "test_d", "test_a", "test_c"], out.stdout

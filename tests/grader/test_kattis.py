@@ -1,28 +1,34 @@
 """Every problem under assignments/ exports to a Kattis package that problemtools' verifyproblem
-accepts (0 errors) as a scoring problem with its groups, and the accepted reference solution
-scores per group in problemtools exactly as our judge scores it.
+accepts (0 errors) as a scoring problem with its groups, and its accepted reference solutions
+(Python and C++) score per group in problemtools exactly as our judge scores them.
 
-What is exported (enough to give every reference solution its verdict, and kept short because
-verifyproblem runs every validator and every submission on every test): the samples, all tests
-of the first scored group, and the first test of the last scored group (the large one, where a
-too-slow solution times out), i.e. ``--groups <first>,<last>:1``. Problems are discovered, so new
-ones are covered when they arrive; the exports and verifyproblem runs go through a pool of 2
-processes.
+What is exported (kept short because verifyproblem runs every validator and every submission on
+every test): the samples, all tests of the first scored group, and the first test of the last
+scored group (the large one, where a too-slow solution times out), i.e. ``--groups
+<first>,<last>:1``. Problems are discovered, so new ones are covered when they arrive; one test
+per problem, so pytest-xdist spreads them over its workers.
+
+Every problem's package goes through verifyproblem's ``config``, ``data``, ``validators`` and
+``submissions`` checks: problem.yaml, the test data and its testdata.yaml files, the input
+validators on every exported test, the output validator, and the accepted submissions, which must
+be AC with full points in every exported group (``accepted.cpp`` compiled with problemtools' own
+flags beside the Python one). Placing the other reference solutions is one piece of code for
+every problem, so the full matrix runs on one problem, :data:`FULL_MATRIX`: every reference
+solution is judged by our judge to place it (``accepted``, ``partially_accepted``,
+``wrong_answer``), and verifyproblem must give each the verdict of its directory. For the other
+problems verifyproblem runs only ``accepted/`` (``-s accepted/``); their wrong solutions' verdicts
+under our judge are tested in ``tests/grader/test_solutions.py``, and there the accepted ones
+score 100 of 100, so their expected points per exported group are each group's points.
 
 The C++ reference solutions (``expected_cpp.yaml``) are exported beside the Python ones, so
 verifyproblem compiles them with its own flags and runs them: ``accepted.cpp`` must score every
-exported group, as our expected verdict says. With these groups the other C++ files are left out
-(``wrong_double.cpp`` fails only ``degenerate``, ``quadratic.cpp``'s TLE is not judged under the
-package's Python limit before the judge takes ``.cpp``, a compile error never goes in): one more
-compile and a few fast runs per problem, so C++ is exported for every problem that has it.
-Where each C++ file goes for other groups is tested without problemtools below.
+exported group, as our expected verdict says. Where each other C++ file goes is tested without
+problemtools below.
 
-Measured 2026-12-01 with the 2 problems then in the checkout (``/usr/bin/time -v`` around
-this file): 90 s of CPU (user + system, verifyproblem and sandboxes included), 5.5 min of wall
-time on a machine with load average 11 on 2 cores. About 45 s of CPU per problem: 12 problems
-need about 9 min of CPU, 4.5 min of wall time on 2 otherwise idle cores. Measured 2026-12-06 with
-the 12 problems and the 9 C++ accepted solutions in their packages: 602 s of CPU (552 user + 51
-system), 47 min of wall time under a load average of 13-14 on 2 cores; 0 errors in every package.
+Measured 2026-12-06 with the 12 problems: all submissions of every problem in one test with a
+pool of 2 took 602 s of CPU (552 user + 51 system), 908 s in CI. As now (``/usr/bin/time`` around
+pytest, load average 8 on 2 cores): the full matrix on proximity-network 102 s of CPU (345 s of
+wall time), each other problem 20-25 s of CPU (55-130 s of wall time), about 330 s of CPU in all.
 
 Run: .venv/bin/python -m pytest tests/grader/test_kattis.py -q
 """
@@ -32,7 +38,6 @@ import os
 import re
 import subprocess
 import sys
-from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
 import pytest
@@ -44,6 +49,10 @@ from grader.problems import REPO, list_problems, load_problem
 
 VERIFY = Path(sys.executable).with_name("verifyproblem")
 PROBLEMS = [p.id for p in list_problems(REPO / "assignments")]
+#: the problem whose every reference solution is placed by judging it and run by verifyproblem
+#: (its package has accepted, partially_accepted and wrong_answer submissions, and a C++ file placed by
+#: judging it: quadratic.cpp; delaunay, with twice the solutions, took 630 s alone on a loaded machine)
+FULL_MATRIX = "proximity-network"
 
 
 def export_groups(problem_id: str) -> list[str]:
@@ -67,62 +76,77 @@ def results_table(out: str) -> dict[str, dict[str, str]]:
     return rows
 
 
-def verify_one(problem_id: str, tmp: str) -> dict:
-    """Worker: export, run verifyproblem, judge the accepted solution on the same tests."""
-    tmp_path = Path(tmp)
+def verify_one(problem_id: str, tmp_path: Path, full: bool) -> dict:
+    """Export, run verifyproblem, and say what our judge gives the accepted solutions on the same
+    tests. ``full``: every reference solution placed by judging it and run by verifyproblem;
+    otherwise the others are placed by their expected verdicts and only ``accepted/`` is run."""
+    (tmp_path / "config" / "problemtools").mkdir(parents=True)
+    (tmp_path / "config" / "problemtools" / "languages.yaml").write_text(LANGUAGES_YAML)
     groups = export_groups(problem_id)
-    dest = export(problem_id, tmp_path / "kattis", groups=groups)
+    dest = export(problem_id, tmp_path / "kattis", groups=groups, judge=full)
     env = {**os.environ, "XDG_CONFIG_HOME": str(tmp_path / "config"),
            "PATH": f"{Path(sys.executable).parent}:{os.environ.get('PATH', '')}"}
-    proc = subprocess.run([str(VERIFY), str(dest), "-p", "config", "data", "validators", "submissions"],
-                          cwd=tmp_path, env=env, capture_output=True, text=True, timeout=1200)
+    only = [] if full else ["-s", "accepted/"]
+    proc = subprocess.run([str(VERIFY), str(dest), *only, "-p", "config", "data", "validators", "submissions"],
+                          cwd=tmp_path, env=env, capture_output=True, text=True, timeout=1800)
     problem = load_problem(problem_id)
     exported = selection(problem, scored_groups(problem, groups))
+    full_points = {group_dirname(problem, g.name): g.points for g in exported.groups}
     ours = {}
     for name, verdict in expected_verdicts(problem_id).items():
-        if verdict == "AC":
+        if verdict == "AC" and full:
             # some problems share a solution through a symbolic link, which the judge (rightly)
             # refuses to follow in a submission: judge the file it points to
             src = (REPO / "solutions" / problem_id / name).resolve()
             r = Judge(exported, hide=[str(src.parent)]).judge_path(src)
             ours[name] = {group_dirname(problem, g): (p if r.group_passed(g) else 0) for g, p in r.group_points.items()}
+        elif verdict == "AC":  # 100 of 100 under our judge on every test (tests/grader/test_solutions.py)
+            ours[name] = full_points
     for name, (verdict, _failing) in expected_cpp(problem_id).items():
-        if verdict == "AC":  # every exported group, full points (the judge does not take .cpp yet)
-            ours[name] = {group_dirname(problem, g.name): g.points for g in exported.groups}
+        if verdict == "AC":  # every exported group, full points (tests/grader/test_solutions.py)
+            ours[name] = full_points
     subs = {d.name: sorted(f.name for f in d.iterdir()) for d in (dest / "submissions").iterdir()}
-    return {"out": proc.stdout + proc.stderr, "ours": ours, "dest": str(dest), "subs": subs}
+    return {"out": proc.stdout + proc.stderr, "ours": ours, "dest": dest, "subs": subs}
+
+
+def test_the_full_matrix_problem_has_every_kind_of_placement():
+    """:data:`FULL_MATRIX` is a problem, and its expected verdicts include wrong and slow solutions."""
+    assert FULL_MATRIX in PROBLEMS, PROBLEMS
+    assert {"AC", "WA", "TLE"} <= set(expected_verdicts(FULL_MATRIX).values())
 
 
 @pytest.mark.slow
 @pytest.mark.skipif(not VERIFY.exists(), reason="problemtools is not installed")
-def test_verifyproblem_accepts_every_problem_with_its_groups(tmp_path):
-    (tmp_path / "config" / "problemtools").mkdir(parents=True)
-    (tmp_path / "config" / "problemtools" / "languages.yaml").write_text(LANGUAGES_YAML)
-    assert PROBLEMS, "no problems found under assignments/"
-    with ProcessPoolExecutor(max_workers=2) as pool:
-        futures = {pid: pool.submit(verify_one, pid, str(tmp_path)) for pid in PROBLEMS}
-        results = {pid: f.result() for pid, f in futures.items()}
-    for pid, res in results.items():
-        out, dest = res["out"], Path(res["dest"])
-        assert dest.name == shortname(pid) and re.fullmatch(r"[a-z0-9]+", dest.name)
-        summary = [ln for ln in out.splitlines() if " tested: " in ln]
-        # A wrong answer that is also slow (the original tutorial's code on random points) may
-        # hit the time limit first under problemtools on a loaded machine: still a rejection, the
-        # only disagreement tolerated; any other error fails.
-        errors = re.search(r"tested: (\d+) errors?", summary[-1]) if summary else None
-        slow_wrong = re.findall(r"ERROR wrong_answer/\S+ .* got TLE", out)
-        assert errors and int(errors.group(1)) == len(slow_wrong), (pid, out[-4000:])
-        assert "accepted" in res["subs"], (pid, res["subs"])
-        cpp_ac = {n for n, (v, _) in expected_cpp(pid).items() if v == "AC"}
-        assert cpp_ac <= set(res["subs"]["accepted"]), (pid, res["subs"])  # C++ is in the package
-        table = results_table(out)
-        for name, per_group in res["ours"].items():
-            row = table[name]
-            for col, points in per_group.items():  # problemtools prints AC(<points>):<time> per group
-                assert re.fullmatch(rf"AC\({points}\):\S+", row[col]), (pid, name, col, row)
-            assert row["Pts"] == str(sum(per_group.values())), (pid, name, row)
+@pytest.mark.parametrize("pid", sorted(PROBLEMS, key=lambda pid: pid != FULL_MATRIX))  # the longest first
+def test_verifyproblem_accepts_the_problem_with_its_groups(pid, tmp_path):
+    full = pid == FULL_MATRIX
+    res = verify_one(pid, tmp_path, full)
+    out, dest = res["out"], res["dest"]
+    assert dest.name == shortname(pid) and re.fullmatch(r"[a-z0-9]+", dest.name)
+    summary = [ln for ln in out.splitlines() if " tested: " in ln]
+    # A wrong answer that is also slow (the original tutorial's code on random points) may
+    # hit the time limit first under problemtools on a loaded machine: still a rejection, the
+    # only disagreement tolerated; any other error fails.
+    errors = re.search(r"tested: (\d+) errors?", summary[-1]) if summary else None
+    slow_wrong = re.findall(r"ERROR wrong_answer/\S+ .* got TLE", out)
+    assert errors and int(errors.group(1)) == len(slow_wrong), (pid, out[-4000:])
+    assert "accepted" in res["subs"], (pid, res["subs"])
+    cpp_ac = {n for n, (v, _) in expected_cpp(pid).items() if v == "AC"}
+    assert cpp_ac <= set(res["subs"]["accepted"]), (pid, res["subs"])  # C++ is in the package
+    table = results_table(out)
+    assert set(res["ours"]) <= set(table), (pid, sorted(table))
+    for name, per_group in res["ours"].items():
+        row = table[name]
+        for col, points in per_group.items():  # problemtools prints AC(<points>):<time> per group
+            assert re.fullmatch(rf"AC\({points}\):\S+", row[col]), (pid, name, col, row)
+        assert row["Pts"] == str(sum(per_group.values())), (pid, name, row)
+    if full:
+        assert {"accepted", "partially_accepted", "wrong_answer"} <= set(res["subs"]), res["subs"]
         for kind in res["subs"]:
             assert re.search(rf"{kind}/\S+ .*(OK|got TLE)", out), (pid, kind, out[-3000:])
+    else:
+        assert re.search(r"accepted/\S+ .*OK", out), (pid, out[-3000:])
+        assert set(table) <= set(res["subs"]["accepted"]), (pid, sorted(table))  # only accepted/ ran
 
 
 def test_export_writes_scored_groups(tmp_path):

@@ -110,17 +110,22 @@ def start_hub(timeout: float = 240) -> Hub:
            "HUB_INSTRUCTORS": INSTRUCTOR, "HUB_STUDENTS": ",".join(STUDENTS), "HUB_AUTH": "dummy",
            "HUB_DUMMY_PASSWORD": password, "HUB_PORT": str(port), "HUB_API_PORT": str(_free_port()),
            "HUB_PROXY_API_PORT": str(_free_port())}
-    subprocess.run([str(DEPLOY), "install"], env=env, check=True, timeout=900)
     for u in (INSTRUCTOR, *STUDENTS):
         # a fresh class: nothing fetched, submitted or cached by an earlier run (nbgrader lists an
-        # assignment as "submitted" from the student's own nbgrader_cache under ~/.local)
-        h = Path(pwd.getpwnam(u).pw_dir)
-        if h.name == u and h.parent == Path("/home"):
+        # assignment as "submitted" from the student's own nbgrader_cache under ~/.local). Emptied
+        # before the install, so the class then finds what the install leaves: the instructor's
+        # test and numba caches that deploy.sh fills, as on a real deployment.
+        try:
+            h = Path(pwd.getpwnam(u).pw_dir)
+        except KeyError:  # the install makes the account
+            continue
+        if h.name == u and h.parent == Path("/home") and h.is_dir():
             for entry in h.iterdir():
                 if entry.is_dir() and not entry.is_symlink():
                     shutil.rmtree(entry, ignore_errors=True)
                 else:
                     entry.unlink(missing_ok=True)
+    subprocess.run([str(DEPLOY), "install"], env=env, check=True, timeout=900)
     log = home / "hub.log"
     with open(log, "w") as f:
         proc = subprocess.Popen([str(DEPLOY), "start"], env=env, stdout=f, stderr=subprocess.STDOUT,
