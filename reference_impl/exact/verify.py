@@ -682,9 +682,9 @@ def _check_delaunay_3d_integers(points, tetrahedra) -> tuple[bool, str]:
     return True, "ok"
 
 
-def _prepare_3d(points) -> tuple:
-    """(P, floats as an (n, 3) array or None when not tame, rep array, number of distinct points, solid?)."""
-    import numpy as np
+def _prepare_3d(points, np) -> tuple:
+    """(P, floats as an (n, 3) array or None when not tame, rep array, number of distinct points, solid?),
+    with ``np`` numpy (passed in: this module imports only the standard library)."""
     P = exact_coordinates_3d(points)
     first: dict = {}
     rep = [first.setdefault(p, i) for i, p in enumerate(P)]
@@ -705,7 +705,7 @@ def _delaunay_3d_accepts(points, tetrahedra, bulk) -> bool:
     numpy throughout: the filters decide most signs at once, integers the rest; faces are matched by
     sorting their keys."""
     np = bulk.np
-    P, X, rep, n_distinct, solid = _prepared(points, "3d", _prepare_3d)
+    P, X, rep, n_distinct, solid = _prepared(points, "3d", lambda pts: _prepare_3d(pts, np))
     n = len(P)
     rows = _int_rows(tetrahedra, n, 4)
     if rows is None or X is None or not solid or not rows or n >= 1 << 20:
