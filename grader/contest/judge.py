@@ -158,6 +158,7 @@ class Judge:
         self.cover = installed_paths([m for m in self.problem.forbidden if m not in ("reference_impl", "grader")])
         self._args = [None] * len(self.tests)
         self._answers = [None] * len(self.tests)
+        self._encoded: list[str | None] = [None] * len(self.tests)
 
     def _test_data(self, k: int):
         if self._args[k] is None:
@@ -165,6 +166,12 @@ class Judge:
             self._args[k] = chk.read_input(t.input_text)
             self._answers[k] = self.problem.read_answer(t, self._args[k])
         return self._args[k], self._answers[k]
+
+    def _args_json(self, k: int) -> str:
+        """Test ``k``'s arguments encoded for the child once per judge (it judges many submissions)."""
+        if self._encoded[k] is None:
+            self._encoded[k] = json.dumps(self._test_data(k)[0], allow_nan=True, separators=(",", ":"))
+        return self._encoded[k]
 
     def judge_path(self, path: str | Path, on_test: Callable[[TestResult], None] | None = None,
                    prior: dict[str, TestResult] | None = None, follow_links: bool = False) -> JudgeResult:
@@ -346,7 +353,7 @@ class Judge:
             if worker is not None:
                 before = _file_size(worker.out_paths[0])
                 err_before = _file_size(err_path)
-                outcome = worker.call(args, time_limit, idle_left=idle_left)
+                outcome = worker.call(args, time_limit, idle_left=idle_left, args_json=self._args_json(k))
             else:
                 outcome = run_stdio(box, sub.source, test.input_text, time_limit, self.problem.forbidden,
                                     filename=sub.filename, idle_left=idle_left, program=program)

@@ -13,7 +13,7 @@ list, ``answer`` the checker's own parsed form of an answer):
 | ``write_output(answer) -> text`` | inverse of ``read_output`` (``.ans`` files are written with it) |
 | ``check(args, answer, expected) -> (bool, message)`` | the verdict; ``expected`` is the reference answer or ``None`` |
 | ``PresentationError`` | an ``Exception`` subclass raised by ``from_result``/``read_output`` for a wrong shape or type |
-| ``LIBRARY`` (optional) | tuple of stdlib-only modules ``reference_impl/<name>.py`` bound as globals |
+| ``LIBRARY`` (optional) | tuple of stdlib-only modules ``reference_impl/<name>.py`` bound as globals (optional imports allowed) |
 | ``read_answer(text, args)`` (optional) | parse an ``.ans`` text when it is not in the output format |
 | ``draw(axes, args, received, expected)`` (optional) | picture for the HTML report on a pair of Axes |
 
@@ -58,13 +58,20 @@ def _takes(fn: Any, n: int) -> bool:
 
 def foreign_imports(source: str, filename: str, allow_in: Sequence[str] = ("draw",)) -> list[str]:
     """Imported top-level modules that are not in the standard library (relative imports included),
-    skipping the bodies of the functions named in ``allow_in``.
+    skipping the bodies of the functions named in ``allow_in`` and optional imports (numpy in
+    ``reference_impl/exact/bulk.py``): a ``try`` whose
+    handler catches ``ImportError`` (the module works without them, as an exported validator must).
 
     >>> foreign_imports("import math\\nimport numpy as np\\n", "x.py")
     ['numpy']
+    >>> foreign_imports("try:\\n    import numpy\\nexcept ImportError:\\n    numpy = None\\n", "x.py")
+    []
     """
     tree = ast.parse(source, filename)
     skip = {id(n) for f in ast.walk(tree) if isinstance(f, ast.FunctionDef) and f.name in allow_in for n in ast.walk(f)}
+    skip |= {id(n) for t in ast.walk(tree) if isinstance(t, ast.Try) and any(
+             h.type is not None and "ImportError" in ast.unparse(h.type) for h in t.handlers)
+             for stmt in t.body for n in ast.walk(stmt)}
     found = []
     for node in ast.walk(tree):
         if id(node) in skip:

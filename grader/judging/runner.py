@@ -221,11 +221,12 @@ class _Child:
         self.pending = (json.dumps({"source": source, "filename": config["filename"]}) + "\n").encode()
         self.violation: str | None = None
 
-    def send(self, obj: dict) -> None:
+    def send(self, obj: dict, args_json: str | None = None) -> None:
         if "id" in obj:
             self.want_id = obj["id"]
             self.line_budget += 1
-        self.pending += (json.dumps(obj, allow_nan=True, separators=(",", ":")) + "\n").encode()
+        line = json.dumps(obj, allow_nan=True, separators=(",", ":"))  # + args encoded by the judge, once a test
+        self.pending += (line if args_json is None else f'{line[:-1]},"args":{args_json}}}').encode() + b"\n"
 
     def wait_reply(self, deadline: float, want: str | None = None) -> dict | None:
         """Pump I/O until a reply (with key ``want`` or any key if None) arrives, the child ends,
@@ -471,9 +472,9 @@ class FunctionWorker:
             self.child.kill()
             self.child = None
 
-    def call(self, args: list, time_limit: float, idle_left: float = float("inf")) -> RunOutcome:
-        """Run the entry function on ``args`` (JSON-native) under ``time_limit`` CPU seconds,
-        stopping early once it has spent ``idle_left`` seconds of wall time not computing."""
+    def call(self, args: list, time_limit: float, idle_left: float = float("inf"), args_json: str | None = None) -> RunOutcome:
+        """Run the entry function on ``args`` (JSON-native; ``args_json``: the same, encoded) under
+        ``time_limit`` CPU seconds, stopping early once it has spent ``idle_left`` s of wall time not computing."""
         if idle_left <= 0:
             return RunOutcome("timeout", message="the submission's wall-time budget is used up (it spent it "
                                                  "sleeping or blocked)", time_s=time_limit)
@@ -489,7 +490,7 @@ class FunctionWorker:
         cpu0 = _cpu_seconds(self.box, child.pid)
         rq0 = _runqueue_seconds(self.box, child.pid)
         wall0 = time.monotonic()
-        child.send({"id": rid, "args": args})
+        child.send({"id": rid} if args_json is not None else {"id": rid, "args": args}, args_json)
         wall_limit = wall_limit_for(time_limit)
         deadline = wall0 + wall_limit
         cpu_exceeded = idle_exceeded = False

@@ -147,7 +147,7 @@ def _index_rows(rows: list, n: int, width: int, what: str) -> tuple[list | None,
     return out, "ok"
 
 
-def check_delaunay(points, triangles) -> tuple[bool, str]:
+def check_delaunay(points, triangles, bulk=None) -> tuple[bool, str]:
     """Check exactly that ``triangles`` is a Delaunay triangulation of ``points``.
 
     ``points`` is (n, 2) finite floats; ``triangles`` is (m, 3) point indices in
@@ -155,7 +155,20 @@ def check_delaunay(points, triangles) -> tuple[bool, str]:
     All-collinear input (or fewer than 3 distinct points) has exactly one valid
     answer: no triangles.  Returns ``(ok, message)``; the message names the
     first problem found.
+
+    Two passes, one verdict: :func:`_delaunay_accepts` (float filters with a proven
+    error bound, integers where they cannot decide; the points' preparation cached
+    per list) accepts a valid answer fast, and anything it does not accept is
+    decided again, with the message, by the integer-only :func:`_check_delaunay_integers`.
+    ``bulk``: the module ``reference_impl/exact/bulk.py`` (numpy), to filter all triangles at once.
     """
+    if _delaunay_accepts(points, triangles, bulk):
+        return True, "ok"
+    return _check_delaunay_integers(points, triangles)
+
+
+def _check_delaunay_integers(points, triangles) -> tuple[bool, str]:
+    """:func:`check_delaunay` in Python integers only, naming the first problem found."""
     P = exact_coordinates(points)
     n = len(P)
     tris = _rows(triangles)
@@ -217,6 +230,208 @@ def check_delaunay(points, triangles) -> tuple[bool, str]:
             return False, (f"edge {u}-{v} is not Delaunay: point {x} is strictly inside the "
                            f"circumcircle of triangle ({u}, {v}, {w})")
     return True, "ok"
+
+
+# ----------------------------------------------------------------------------- the fast pass
+# Shewchuk's float filters ("Adaptive precision floating-point arithmetic and fast robust geometric
+# predicates", 1997): evaluated in doubles in his order, a determinant whose magnitude exceeds
+# ERRBOUND x its permanent has the exact determinant's sign, provided no operation underflows or
+# overflows.  The bounds below are twice his (a margin), and the filters are used only on "tame"
+# point sets, whose every coordinate is 0 or of magnitude in [2^-150, 2^150]: then a nonzero
+# difference of two coordinates lies in [2^-202, 2^151] and a product of up to five of them (the
+# in-sphere's) in [2^-1010, 2^755], normal doubles.  Where a filter cannot decide, the integers do.
+_EPS = 2.0 ** -53
+_CCW_BOUND = 2 * (3.0 + 16.0 * _EPS) * _EPS
+_ICC_BOUND = 2 * (10.0 + 96.0 * _EPS) * _EPS
+_O3D_BOUND = 2 * (7.0 + 56.0 * _EPS) * _EPS
+_ISP_BOUND = 2 * (16.0 + 224.0 * _EPS) * _EPS
+_TAME_LO, _TAME_HI = 2.0 ** -150, 2.0 ** 150
+
+
+def _tame(coords) -> bool:
+    """Is every coordinate 0 or of magnitude in [2^-150, 2^150] (the filters' range)?
+
+    >>> _tame([(0.0, 1e-3), (2.0, -5.0)]), _tame([(1e-300, 1.0)])
+    (True, False)
+    """
+    return all(v == 0.0 or _TAME_LO <= abs(v) <= _TAME_HI for p in coords for v in p)
+
+
+def orient_filtered(F, P, a: int, b: int, c: int) -> int:
+    """orient2d of points a, b, c: doubles ``F`` when the filter decides, else integers ``P``
+    (``F`` from a tame set; ``P`` its :func:`exact_coordinates`).
+
+    >>> orient_filtered([(0.0, 0.0), (1.0, 0.0), (0.0, 1.0)], [(0, 0), (1, 0), (0, 1)], 0, 1, 2)
+    1
+    """
+    (ax, ay), (bx, by), (cx, cy) = F[a], F[b], F[c]
+    left = (ax - cx) * (by - cy)
+    right = (ay - cy) * (bx - cx)
+    det = left - right
+    bound = _CCW_BOUND * (abs(left) + abs(right))
+    if det > bound:
+        return 1
+    if -det > bound:
+        return -1
+    return orient_exact(P[a], P[b], P[c])
+
+
+def incircle_filtered(F, P, a: int, b: int, c: int, d: int) -> int:
+    """:func:`incircle_exact` of points a, b, c, d: doubles when the filter decides, else integers.
+
+    >>> incircle_filtered([(0.0, 0.0), (2.0, 0.0), (0.0, 2.0), (1.0, 1.0)], [(0, 0), (2, 0), (0, 2), (1, 1)], 0, 1, 2, 3)
+    1
+    """
+    (ax, ay), (bx, by), (cx, cy), (dx, dy) = F[a], F[b], F[c], F[d]
+    adx, ady, bdx, bdy, cdx, cdy = ax - dx, ay - dy, bx - dx, by - dy, cx - dx, cy - dy
+    bdxcdy, cdxbdy = bdx * cdy, cdx * bdy
+    cdxady, adxcdy = cdx * ady, adx * cdy
+    adxbdy, bdxady = adx * bdy, bdx * ady
+    alift, blift, clift = adx * adx + ady * ady, bdx * bdx + bdy * bdy, cdx * cdx + cdy * cdy
+    det = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady)
+    bound = _ICC_BOUND * ((abs(bdxcdy) + abs(cdxbdy)) * alift + (abs(cdxady) + abs(adxcdy)) * blift
+                          + (abs(adxbdy) + abs(bdxady)) * clift)
+    if det > bound:
+        return 1
+    if -det > bound:
+        return -1
+    return incircle_exact(P[a], P[b], P[c], P[d])
+
+
+#: per point list, what every check of it needs (see :func:`_prepared`); bounded by _PREPARED_MAX points
+_PREPARED: dict = {}
+_PREPARED_MAX = 4_000_000
+
+
+def _prepared(points, kind: str, build):
+    """``build(points)``, cached for a point *list* checked again (a judge checks every student's
+    answer to one test against the same list): the entry holds the list and a copy of its rows,
+    and is used only while the list is that object and still equal to the copy."""
+    if type(points) is not list:
+        return build(points)
+    key = (id(points), kind)
+    hit = _PREPARED.get(key)
+    if hit is not None and hit[0] is points and hit[1] == points:
+        return hit[2]
+    data = build(points)
+    if sum(len(h[1]) for h in _PREPARED.values()) + len(points) > _PREPARED_MAX:
+        _PREPARED.clear()
+    _PREPARED[key] = (points, [p[:] for p in points], data)
+    return data
+
+
+def _prepare_2d(points) -> tuple:
+    """(P, F, rep, number of distinct points, directed hull edges, all collinear?, tame?)."""
+    P = exact_coordinates(points)
+    F = [(float(p[0]), float(p[1])) for p in points]
+    canon: dict = {}
+    rep = [canon.setdefault(p, i) for i, p in enumerate(P)]
+    distinct = sorted(canon.values())
+    hull = convex_hull_exact(P, keep_collinear=True)
+    flat = len(distinct) < 3 or all(orient_exact(P[hull[0]], P[hull[-1]], P[i]) == 0 for i in distinct)
+    hull_edges = {(hull[i], hull[(i + 1) % len(hull)]) for i in range(len(hull))}
+    return P, F, rep, len(distinct), hull_edges, flat, _tame(F), {}
+
+
+def indexed_predicates(points) -> tuple:
+    """``(P, rep, orient, incircle)`` for a point set: :func:`exact_coordinates`, each point's first
+    duplicate, and exact orient2d / incircle on point *indices* (float-filtered when the set is
+    tame, integers otherwise); prepared once per point list (:func:`_prepared`).
+
+    >>> P, rep, orient, incircle = indexed_predicates([(0.0, 0.0), (2.0, 0.0), (0.0, 2.0), (1.0, 1.0)])
+    >>> orient(0, 1, 2), incircle(0, 1, 2, 3), rep
+    (1, 1, [0, 1, 2, 3])
+    """
+    P, F, rep, _, _, _, tame, _ = _prepared(points, "2d", _prepare_2d)
+    if tame:
+        return (P, rep, lambda a, b, c: orient_filtered(F, P, a, b, c),
+                lambda a, b, c, d: incircle_filtered(F, P, a, b, c, d))
+    return (P, rep, lambda a, b, c: orient_exact(P[a], P[b], P[c]),
+            lambda a, b, c, d: incircle_exact(P[a], P[b], P[c], P[d]))
+
+
+def _int_rows(triangles, n: int, width: int) -> list | None:
+    """The rows when they are ``width`` ints in 0..n-1 each (checked in bulk), else None."""
+    rows = triangles if type(triangles) is list else _rows(triangles)
+    if not all((type(t) is list or type(t) is tuple) and len(t) == width for t in rows):
+        return None
+    flat = [v for t in rows for v in t]
+    if flat and ({type(v) for v in flat} != {int} or min(flat) < 0 or max(flat) >= n):
+        return None
+    return rows
+
+
+def _delaunay_accepts(points, triangles, bulk=None) -> bool:
+    """True only when every check of :func:`_check_delaunay_integers` passes (False: ask it why)."""
+    P, F, rep, n_distinct, hull_edges, flat, tame, arrays = _prepared(points, "2d", _prepare_2d)
+    rows = _int_rows(triangles, len(P), 3)
+    if rows is None:
+        return False
+    if bulk is not None and bulk.AVAILABLE and tame and not flat and len(rows) >= 16 and len(P) < 1 << 31:
+        return _delaunay_accepts_bulk(bulk, P, F, rep, n_distinct, hull_edges, arrays, rows)
+    T = [(rep[a], rep[b], rep[c]) for a, b, c in rows]
+    if flat:
+        return not T
+    orient = orient_filtered if tame else (lambda F, P, a, b, c: orient_exact(P[a], P[b], P[c]))
+    if not all(orient(F, P, a, b, c) > 0 for a, b, c in T):
+        return False
+    opposite: dict = {}
+    for a, b, c in T:
+        opposite[(a, b)] = c
+        opposite[(b, c)] = a
+        opposite[(c, a)] = b
+    if len(opposite) != 3 * len(T):
+        return False  # a directed edge used twice
+    if {e for e in opposite if (e[1], e[0]) not in opposite} != hull_edges:
+        return False  # the one-sided edges are not exactly the hull cycle
+    if len({v for t in T for v in t}) != n_distinct:
+        return False  # a point is not a vertex
+    incircle = incircle_filtered if tame else (lambda F, P, a, b, c, d: incircle_exact(P[a], P[b], P[c], P[d]))
+    get = opposite.get
+    for (u, v), w in opposite.items():
+        if u < v:
+            x = get((v, u))
+            if x is not None and incircle(F, P, u, v, w, x) > 0:
+                return False
+    return True
+
+
+def _delaunay_accepts_bulk(bulk, P, F, rep, n_distinct, hull_edges, arrays, rows) -> bool:
+    """:func:`_delaunay_accepts` for a tame, not collinear set, with numpy: the filters decide
+    most signs at once (``bulk``), integers the rest; edges matched by sorting their keys."""
+    np = bulk.np
+    n = len(P)
+    if not arrays:
+        xy = np.array(F, dtype=np.float64).reshape(-1, 2)
+        arrays.update(x=xy[:, 0].copy(), y=xy[:, 1].copy(), rep=np.array(rep, dtype=np.int64),
+                      hull=np.sort(np.array([u * n + v for u, v in hull_edges], dtype=np.int64)))
+    X, Y = arrays["x"], arrays["y"]
+    t = arrays["rep"][np.array(rows, dtype=np.int64).reshape(-1, 3)]
+    a, b, c = t[:, 0], t[:, 1], t[:, 2]
+    s = bulk.orient2d(X[a], Y[a], X[b], Y[b], X[c], Y[c])
+    for k in np.flatnonzero(s == 0).tolist():
+        s[k] = orient_exact(P[a[k]], P[b[k]], P[c[k]])
+    if (s <= 0).any():
+        return False
+    u, v, w = np.concatenate((a, b, c)), np.concatenate((b, c, a)), np.concatenate((c, a, b))
+    key = u * n + v
+    order = np.argsort(key)
+    ks = key[order]
+    if (ks[1:] == ks[:-1]).any():
+        return False  # a directed edge used twice
+    back = v * n + u
+    pos = np.minimum(np.searchsorted(ks, back), len(ks) - 1)
+    paired = ks[pos] == back
+    if not np.array_equal(np.sort(key[~paired]), arrays["hull"]):
+        return False  # the one-sided edges are not exactly the hull cycle
+    if np.unique(t).size != n_distinct:
+        return False  # a point is not a vertex
+    inner = paired & (u < v)
+    uu, vv, ww, xx = u[inner], v[inner], w[inner], w[order[pos[inner]]]
+    s = bulk.incircle(X[uu], Y[uu], X[vv], Y[vv], X[ww], Y[ww], X[xx], Y[xx])
+    for k in np.flatnonzero(s == 0).tolist():
+        s[k] = incircle_exact(P[uu[k]], P[vv[k]], P[ww[k]], P[xx[k]])
+    return not (s > 0).any()
 
 
 def check_triangulation_size(n_distinct: int, n_hull: int, n_triangles: int) -> bool:
@@ -343,7 +558,7 @@ def _solid_base(P: list, distinct: list[int]) -> tuple[int, int, int, int] | Non
 _FACES3 = ((1, 3, 2), (0, 2, 3), (0, 3, 1), (0, 1, 2))
 
 
-def check_delaunay_3d(points, tetrahedra) -> tuple[bool, str]:
+def check_delaunay_3d(points, tetrahedra, bulk=None) -> tuple[bool, str]:
     """Check exactly that ``tetrahedra`` is a Delaunay tetrahedralisation of ``points``.
 
     ``points`` is (n, 3) finite floats; ``tetrahedra`` (m, 4) point indices, in either
@@ -371,7 +586,18 @@ def check_delaunay_3d(points, tetrahedra) -> tuple[bool, str]:
     (True, 'ok')
     >>> check_delaunay_3d(cube, [(0, 1, 2, 4)])[1]
     'point 3 (0, 1, 1) is not a vertex of any tetrahedron'
+
+    ``bulk`` (the module ``reference_impl/exact/bulk.py``, numpy): a fast pass that filters every
+    sign at once and accepts a valid answer; anything it does not accept is decided again, with
+    the message, in integers only (:func:`_check_delaunay_3d_integers`).
     """
+    if bulk is not None and bulk.AVAILABLE and _delaunay_3d_accepts(points, tetrahedra, bulk):
+        return True, "ok"
+    return _check_delaunay_3d_integers(points, tetrahedra)
+
+
+def _check_delaunay_3d_integers(points, tetrahedra) -> tuple[bool, str]:
+    """:func:`check_delaunay_3d` in Python integers only, naming the first problem found."""
     P = exact_coordinates_3d(points)
     n = len(P)
     first: dict = {}
@@ -454,6 +680,99 @@ def check_delaunay_3d(points, tetrahedra) -> tuple[bool, str]:
     if missing:
         return False, f"point {missing[0]} {tuple(points[missing[0]])} is not a vertex of any tetrahedron"
     return True, "ok"
+
+
+def _prepare_3d(points, np) -> tuple:
+    """(P, floats as an (n, 3) array or None when not tame, rep array, number of distinct points, solid?),
+    with ``np`` numpy (passed in: this module imports only the standard library)."""
+    P = exact_coordinates_3d(points)
+    first: dict = {}
+    rep = [first.setdefault(p, i) for i, p in enumerate(P)]
+    distinct = sorted(first.values())
+    F = [tuple(float(v) for v in p) for p in points]
+    X = np.array(F, dtype=np.float64).reshape(-1, 3) if _tame(F) else None
+    return P, X, np.array(rep, dtype=np.int64), len(distinct), _solid_base(P, distinct) is not None
+
+
+def _fix_undecided(signs, exact) -> None:
+    """Replace each 0 (undecided) of a filter's signs by ``exact(k)``."""
+    for k in (signs == 0).nonzero()[0].tolist():
+        signs[k] = exact(k)
+
+
+def _delaunay_3d_accepts(points, tetrahedra, bulk) -> bool:
+    """True only when every check of :func:`_check_delaunay_3d_integers` passes (False: ask it why).
+    numpy throughout: the filters decide most signs at once, integers the rest; faces are matched by
+    sorting their keys."""
+    np = bulk.np
+    P, X, rep, n_distinct, solid = _prepared(points, "3d", lambda pts: _prepare_3d(pts, np))
+    n = len(P)
+    rows = _int_rows(tetrahedra, n, 4)
+    if rows is None or X is None or not solid or not rows or n >= 1 << 20:
+        return False
+    t = rep[np.array(rows, dtype=np.int64).reshape(-1, 4)]
+    s = bulk.orient3d(X[t[:, 0]], X[t[:, 1]], X[t[:, 2]], X[t[:, 3]])
+    _fix_undecided(s, lambda k: orient3d_exact(*(P[v] for v in t[k].tolist())))
+    if (s == 0).any():
+        return False
+    t[s < 0, :2] = t[s < 0, 1::-1]                       # each tetrahedron positively oriented
+    faces = np.concatenate([t[:, list(f)] for f in _FACES3])          # listed so the apex is positive
+    apex = np.concatenate([t[:, k] for k in range(4)])
+    srt = np.sort(faces, axis=1)
+    key = (srt[:, 0] * n + srt[:, 1]) * n + srt[:, 2]
+    order = np.argsort(key, kind="stable")
+    ks = key[order]
+    same = ks[1:] == ks[:-1]
+    if (same[1:] & same[:-1]).any():
+        return False                                      # a face of three tetrahedra
+    first = order[:-1][same]
+    second = order[1:][same]
+    f = faces
+    parity = ((f[:, 0] > f[:, 1]).astype(np.int8) + (f[:, 0] > f[:, 2]) + (f[:, 1] > f[:, 2])) & 1
+    if (parity[first] == parity[second]).any():
+        return False                                      # two tetrahedra on one side of their face
+    a, b, c = X[f[first, 0]], X[f[first, 1]], X[f[first, 2]]
+    x, y = X[apex[first]], X[apex[second]]
+    s = bulk.insphere(a, b, c, x, y)
+    _fix_undecided(s, lambda k: insphere_exact(*(P[v] for v in (*f[first[k]].tolist(), int(apex[first[k]]),
+                                                                    int(apex[second[k]])))))
+    if (s > 0).any():
+        return False
+    paired = np.zeros(len(key), dtype=bool)
+    paired[first] = paired[second] = True
+    bfaces, bapex = f[~paired], apex[~paired]
+    bverts = np.unique(bfaces)
+    if len(bfaces) > max(4, 2 * len(bverts) - 4):
+        return False
+    # every boundary vertex on the inner side of every boundary face (or on it): orient3d >= 0
+    for lo in range(0, len(bfaces), max(1, 200_000 // max(1, len(bverts)))):
+        g = bfaces[lo:lo + max(1, 200_000 // max(1, len(bverts)))]
+        k, m = len(g), len(bverts)
+        sides = bulk.orient3d(np.repeat(X[g[:, 0]], m, 0), np.repeat(X[g[:, 1]], m, 0),
+                              np.repeat(X[g[:, 2]], m, 0), np.tile(X[bverts], (k, 1)))
+        for j in (sides == 0).nonzero()[0].tolist():
+            sides[j] = orient3d_exact(*(P[v] for v in g[j // m].tolist()), P[int(bverts[j % m])])
+        if (sides < 0).any():
+            return False
+    sides = bulk.orient3d(X[bfaces[:, 0]], X[bfaces[:, 1]], X[bfaces[:, 2]], X[bapex])
+    _fix_undecided(sides, lambda k: orient3d_exact(*(P[v] for v in (*bfaces[k].tolist(), int(bapex[k])))))
+    if (sides <= 0).any():
+        return False                                      # (the listing puts every apex on the positive side)
+    # the centroid of the first tetrahedron (times 4) covered by exactly one: candidates by a float
+    # box widened beyond any rounding, then the integers
+    c4 = tuple(sum(P[v][i] for v in t[0].tolist()) for i in range(3))
+    cf = X[t[0]].sum(axis=0)
+    tol = 1e-9 * (float(np.abs(X).max()) + 1e-300)
+    q = 4 * X[t]
+    near = ((q.min(axis=1) <= cf + tol) & (q.max(axis=1) >= cf - tol)).all(axis=1)
+    covering = 0
+    for row in t[near].tolist():
+        qq = [tuple(4 * v for v in P[w]) for w in row]
+        if any(min(p[i] for p in qq) > c4[i] or max(p[i] for p in qq) < c4[i] for i in range(3)):
+            continue
+        if all(orient3d_exact(*(c4 if j == k else qq[j] for j in range(4))) >= 0 for k in range(4)):
+            covering += 1
+    return covering == 1 and np.unique(t).size == n_distinct
 
 
 def _same_cycle(f: tuple, g: tuple) -> bool:

@@ -68,13 +68,10 @@ def check(args: list, pair: list[int], expected: list[int] | None) -> tuple[bool
         return False, f"[{i}, {j}] is one point twice: the two indices must differ"
     if expected is None:
         return True, "ok (not compared with the minimum)"
-    P = verify.exact_coordinates(points)  # noqa: F821
-
-    def sq(a: int, b: int) -> int:
-        return (P[a][0] - P[b][0]) ** 2 + (P[a][1] - P[b][1]) ** 2
-
     a, b = expected
-    if sq(i, j) == sq(a, b):
+    # the four points alone, scaled by one common power of two: the squared distances compare exactly
+    (pi, pj, pa, pb) = verify.exact_coordinates([points[i], points[j], points[a], points[b]])  # noqa: F821
+    if (pi[0] - pj[0]) ** 2 + (pi[1] - pj[1]) ** 2 == (pa[0] - pb[0]) ** 2 + (pa[1] - pb[1]) ** 2:
         return True, "ok"
     mine = math.hypot(points[i][0] - points[j][0], points[i][1] - points[j][1])
     best = math.hypot(points[a][0] - points[b][0], points[a][1] - points[b][1])

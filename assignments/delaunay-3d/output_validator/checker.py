@@ -18,7 +18,7 @@ Example:
 """
 from __future__ import annotations
 
-LIBRARY = ("judge_io", "verify")  # bound as globals by the shared loader
+LIBRARY = ("judge_io", "verify", "bulk")  # bound as globals by the shared loader
 SMALL = 24                        # inputs up to this many points are quoted in messages
 
 PresentationError = judge_io.PresentationError  # noqa: F821 - bound by the loader
@@ -84,11 +84,13 @@ def check(args: list, tets: list[list[int]], expected: list[list[int]] | None) -
     """Exact check; ``expected`` (the reference answer) only improves the message."""
     (points,) = args
     n = len(points)
-    for k, t in enumerate(tets):
-        bad = [v for v in t if not 0 <= v < n]
-        if bad:
-            return False, f"tetrahedron {k} = {t} uses index {bad[0]}, outside 0..{n - 1}"
-    ok, message = verify.check_delaunay_3d(points, tets)  # noqa: F821
+    flat = [v for t in tets for v in t]
+    if flat and (min(flat) < 0 or max(flat) >= n):  # then name the first one out of range
+        for k, t in enumerate(tets):
+            bad = [v for v in t if not 0 <= v < n]
+            if bad:
+                return False, f"tetrahedron {k} = {t} uses index {bad[0]}, outside 0..{n - 1}"
+    ok, message = verify.check_delaunay_3d(points, tets, bulk)  # noqa: F821
     if not ok:
         if expected is not None and len(expected) != len(tets):
             message += f" (a valid answer has {len(expected)} tetrahedra, you gave {len(tets)})"

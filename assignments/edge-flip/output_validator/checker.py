@@ -8,7 +8,8 @@ Each flip ``[a, b]`` must be, at its turn, an interior edge of the current trian
 triangles ``a b c`` and ``b a d`` on its sides) that is *not locally Delaunay*: ``d`` strictly
 inside the circumcircle of ``a b c`` (then the quadrilateral is strictly convex; this is checked
 too). The edge is replaced by ``c d``. After the last flip the triangulation must be Delaunay
-(``verify.check_delaunay``). Every decision uses Python integers (``verify``'s exact predicates).
+(``verify.check_delaunay``). Every decision is exact (``verify``'s predicates: a float filter with a proven
+error bound, Python integers where it cannot decide).
 
 Example:
     >>> check([[[0, 0], [4, 0], [4, 1], [0, 3]], [[0, 1, 3], [1, 2, 3]]], [[1, 3]], None)
@@ -18,7 +19,7 @@ Example:
 """
 from __future__ import annotations
 
-LIBRARY = ("judge_io", "verify")  # bound as globals by the shared loader
+LIBRARY = ("judge_io", "verify", "bulk")  # bound as globals by the shared loader
 SMALL = 16                        # triangulations up to this many points are quoted in messages
 
 PresentationError = judge_io.PresentationError  # noqa: F821 - bound by the loader
@@ -69,37 +70,38 @@ def read_output(text: str, args: list | None) -> list[list[int]]:
     return judge_io.read_index_rows(text, 2, "flip", _limit(args))  # noqa: F821
 
 
+def _where(flips, s: int) -> str:
+    """``flip s = [a, b]`` as submitted (formatted only when a message quotes it)."""
+    return f"flip {s} = [{flips[s][0]}, {flips[s][1]}]"
+
+
 def replay(points, triangles, flips) -> tuple[list | None, str]:
     """Apply the flips one by one; ``(final triangles, "ok")`` or ``(None, what is wrong)``.
 
     >>> replay([[0, 0], [4, 0], [4, 1], [0, 3]], [[0, 1, 3], [1, 2, 3]], [[1, 3]])[0]
     [[2, 3, 0], [0, 1, 2]]
     """
-    P = verify.exact_coordinates(points)  # noqa: F821
+    P, rep, orient, incircle = verify.indexed_predicates(points)  # noqa: F821 - exact, on indices
     n = len(P)
-    first: dict = {}
-    rep = [first.setdefault(p, i) for i, p in enumerate(P)]
     opp = {}                              # directed edge (u, v) -> w of the CCW triangle (u, v, w)
     for a, b, c in triangles:
         a, b, c = rep[a], rep[b], rep[c]
         opp[(a, b)], opp[(b, c)], opp[(c, a)] = c, a, b
-    orient, incircle = verify.orient_exact, verify.incircle_exact  # noqa: F821
     for s, (a, b) in enumerate(flips):
-        where = f"flip {s} = [{a}, {b}]"
         if not (0 <= a < n and 0 <= b < n):
-            return None, f"{where}: index outside 0..{n - 1}"
+            return None, f"{_where(flips, s)}: index outside 0..{n - 1}"
         a, b = rep[a], rep[b]
         c, d = opp.get((a, b)), opp.get((b, a))
         if c is None and d is None:
-            return None, f"{where} is not an edge of the current triangulation (after {s} flips)"
+            return None, f"{_where(flips, s)} is not an edge of the current triangulation (after {s} flips)"
         if c is None or d is None:
-            return None, f"{where} is a convex hull edge: only interior edges can be flipped"
-        if incircle(P[a], P[b], P[c], P[d]) <= 0:
-            tie = "on" if incircle(P[a], P[b], P[c], P[d]) == 0 else "outside"
-            return None, (f"{where} is already locally Delaunay (point {d} is {tie} the circumcircle of "
+            return None, f"{_where(flips, s)} is a convex hull edge: only interior edges can be flipped"
+        if incircle(a, b, c, d) <= 0:
+            tie = "on" if incircle(a, b, c, d) == 0 else "outside"
+            return None, (f"{_where(flips, s)} is already locally Delaunay (point {d} is {tie} the circumcircle of "
                           f"triangle {a} {b} {c}): only illegal edges may be flipped")
-        if orient(P[c], P[d], P[b]) <= 0 or orient(P[d], P[c], P[a]) <= 0:   # cannot happen if illegal
-            return None, f"{where}: its quadrilateral {a} {d} {b} {c} is not strictly convex"
+        if orient(c, d, b) <= 0 or orient(d, c, a) <= 0:   # cannot happen if illegal
+            return None, f"{_where(flips, s)}: its quadrilateral {a} {d} {b} {c} is not strictly convex"
         for e in ((a, b), (b, c), (c, a), (b, a), (a, d), (d, b)):
             del opp[e]
         opp[(c, a)], opp[(a, d)], opp[(d, c)] = d, c, a       # triangle (c, a, d)
@@ -130,7 +132,7 @@ def check(args: list, flips: list[list[int]], expected: list[list[int]] | None) 
     points, triangles = args
     final, message = replay(points, triangles, flips)
     if final is not None:
-        ok, why = verify.check_delaunay(points, final)  # noqa: F821
+        ok, why = verify.check_delaunay(points, final, bulk)  # noqa: F821
         if ok:
             return True, "ok"
         message = f"after your {len(flips)} flips the triangulation is not Delaunay: {why}"
