@@ -158,7 +158,7 @@ class Judge:
         self.cover = installed_paths([m for m in self.problem.forbidden if m not in ("reference_impl", "grader")])
         self._args = [None] * len(self.tests)
         self._answers = [None] * len(self.tests)
-        self._encoded: list[str | None] = [None] * len(self.tests)
+        self._encoded: dict[int, tuple[TestCase, str]] = {}
 
     def _test_data(self, k: int):
         if self._args[k] is None:
@@ -167,11 +167,21 @@ class Judge:
             self._answers[k] = self.problem.read_answer(t, self._args[k])
         return self._args[k], self._answers[k]
 
+    def use_tests(self, tests: list[TestCase]) -> None:
+        """Judge ``tests`` from now on (stress and the counterexample search set a batch at a time)."""
+        self.tests, self._args, self._answers = tests, [None] * len(tests), [None] * len(tests)
+        self._encoded = {}
+
     def _args_json(self, k: int) -> str:
-        """Test ``k``'s arguments encoded for the child once per judge (it judges many submissions)."""
-        if self._encoded[k] is None:
-            self._encoded[k] = json.dumps(self._test_data(k)[0], allow_nan=True, separators=(",", ":"))
-        return self._encoded[k]
+        """Test ``k``'s arguments encoded for the child once per judge (it judges many submissions).
+        The encoding is kept with the test it was made from and used only for that same test:
+        ``self.tests`` may be replaced (:meth:`use_tests`, or by hand), and a stale encoding would
+        send another test's input."""
+        kept = self._encoded.get(k)
+        if kept is None or kept[0] is not self.tests[k]:
+            kept = self._encoded[k] = (self.tests[k], json.dumps(self._test_data(k)[0], allow_nan=True,
+                                                                 separators=(",", ":")))
+        return kept[1]
 
     def judge_path(self, path: str | Path, on_test: Callable[[TestResult], None] | None = None,
                    prior: dict[str, TestResult] | None = None, follow_links: bool = False) -> JudgeResult:

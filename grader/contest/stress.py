@@ -311,7 +311,7 @@ class _Runner:
     def _judge(self, tests: list[TestCase]) -> list[TestResult]:
         """Judge ``tests`` in one sandboxed run (one idle budget; none starts after the deadline)."""
         j = self.judge
-        j.tests, j._args, j._answers = tests, [None] * len(tests), [None] * len(tests)
+        j.use_tests(tests)
         return j.judge(self.sub, str(self.sub.filename), deadline=self.deadline).tests
 
     def _alone(self, test: TestCase) -> TestResult | None:

@@ -186,3 +186,18 @@ def test_the_json_of_a_result_has_stderr_only_when_it_was_kept():
     assert "stderr" not in plain.to_json()          # judge --json and the results store as before
     kept = TestResult("t/1", "t", Verdict.RE, message="boom", stderr="Traceback ...")
     assert kept.to_json()["stderr"] == "Traceback ..." and TestResult.from_json(kept.to_json()) == kept
+
+
+def test_a_judge_given_other_tests_sends_their_inputs_not_the_old_ones(tmp_path):
+    """The judge encodes a test's arguments once and keeps the encoding with its test: after
+    ``use_tests`` (each stress batch) or a hand-made swap of ``judge.tests``, the child gets the new
+    inputs (a stale encoding judged every batch on the first batch's inputs)."""
+    problem = tiny_problem(tmp_path, exhaustive=[{"kind": "points", "points": [[0, 0], [1, 0], [0, 1]], "shuffle": False}])
+    judge = Judge(problem)
+    first = judge._args_json(0)
+    other = [stress_mod._test(problem, {"kind": "points", "points": [[0, 0], [5, 0], [0, 5], [5, 5]]}, "other/1")]
+    judge.use_tests(other)
+    assert judge._args_json(0) != first and "5.0" in judge._args_json(0)
+    judge.tests = [problem.tests()[0]]               # by hand, without use_tests
+    judge._args, judge._answers = [None], [None]
+    assert judge._args_json(0) == first

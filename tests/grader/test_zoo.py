@@ -70,13 +70,11 @@ def test_zoo_solution_fails_its_scored_group(problem, file, group, judges):
     points = judge.problem.group_points[group]
     assert points > 0, f"{group} is not a scored group"
     all_tests = judge.tests
-    judge.tests = [t for t in all_tests if t.group == group]
-    judge._args, judge._answers = [None] * len(judge.tests), [None] * len(judge.tests)
+    judge.use_tests([t for t in all_tests if t.group == group])
     try:
         result = judge.judge_path(REPO / "solutions" / problem / file, follow_links=True)
     finally:
-        judge.tests = all_tests
-        judge._args, judge._answers = [None] * len(all_tests), [None] * len(all_tests)
+        judge.use_tests(all_tests)
     verdicts = [t.verdict for t in result.tests]
     assert Verdict.JE not in verdicts
     assert Verdict.WA in verdicts, f"{file} passes every test of {group}"
