@@ -6,8 +6,11 @@ submission fails too, and show it with the student's answer and the checker's re
 input stays hidden, and the student still gets something to debug. The search is
 :func:`grader.contest.stress.stress` (same batches, same sandbox and limits, each failure judged
 again alone, then shrunk) on **public families only**: the lattice configurations of
-:mod:`grader.problems.smallcases` in another order than the ``exhaustive`` group lists them, then
-:func:`grader.contest.stress.random_case` inputs that grow with time. Never hidden data: an input
+:mod:`grader.problems.smallcases` in another order than the ``exhaustive`` group lists them, in
+turn with the families of :mod:`grader.problems.families` (small inputs scaled, shifted far out,
+nudged by one ulp off a degenerate configuration, nearly flat, beyond a finite super-triangle:
+where floating point fails), then :func:`grader.contest.stress.random_case` inputs that grow
+with time. Never hidden data: an input
 that reads the same as any test of the problem (hidden or sample; compared by
 :func:`grader.contest.stress.normalized` text) is never judged, and the result is checked again
 before it is returned. A solution that is only slow never gets one (TLE is never a
@@ -95,11 +98,7 @@ def size_of(case: dict) -> int:
     >>> size_of({"kind": "room", "boundary": [[0, 0], [4, 0], [0, 4]], "holes": [[[1, 1], [2, 1], [1, 2]]]})
     6
     """
-    if isinstance(case.get("operations"), list):
-        return len(case["operations"])
-    if isinstance(case.get("boundary"), list):
-        return len(case["boundary"]) + sum(len(h) for h in case.get("holes") or [])
-    return len(case.get("points") or [])
+    return families.size_of(case)
 
 
 def hidden_inputs(problem: Problem) -> frozenset[str]:
