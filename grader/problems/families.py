@@ -107,20 +107,12 @@ def _nudged(points: list[list[float]], k: int, axis: int, up: bool) -> list[list
 
 
 def _special_2d() -> list[list[list[float]]]:
-    """Point lists: one-ulp nudges of cocircular and collinear configurations (near the origin
-    and far from it), nearly flat hull triangles, and points beyond 1e5 and 1e6."""
+    """Point lists: nearly flat hull triangles, points beyond 1e5 and 1e6, then one-ulp nudges of
+    cocircular and collinear configurations (near the origin and far from it)."""
     square = [[0, 0], [2, 0], [2, 2], [0, 2]]
     kite = [[0, 0], [2, 0], [2, 2], [0, 2], [1, 3]]
     line = [[0, 0], [1, 1], [2, 2], [0, 2]]
-    out: list[list[list[float]]] = []
-    for offset in (0.0, 2.0 ** 30, 1e9):
-        for base, movers in ((square, (2, 3)), (line, (1,))):
-            moved = [[c + offset for c in p] for p in base]
-            for k in movers:
-                for axis in (0, 1):
-                    for up in (True, False):
-                        out.append(_nudged(moved, k, axis, up))
-    out.append([list(map(float, p)) for p in kite])
+    out: list[list[list[float]]] = [[list(map(float, p)) for p in kite]]
     for eps in (NEAR, -NEAR, 1e-9):
         out.append([[0.0, 0.0], [1.0, eps], [2.0, 0.0], [1.0, 1.0]])
         out.append([[0.0, 0.0], [2.0, 0.0], [1.0, eps]])
@@ -128,6 +120,13 @@ def _special_2d() -> list[list[list[float]]]:
         out.append([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0], [2 * far, 2 * far]])
         out.append([[-far, -far], [far, -far], [0.0, far], [0.0, 0.0], [1.0, 1.0]])
         out.append([[0.0, 0.0], [far, 1.0], [-far, 1.0], [0.0, -far]])
+    for offset in (0.0, 2.0 ** 30, 1e9):
+        for base, movers in ((square, (2, 3)), (line, (1,))):
+            moved = [[c + offset for c in p] for p in base]
+            for k in movers:
+                for axis in (0, 1):
+                    for up in (True, False):
+                        out.append(_nudged(moved, k, axis, up))
     return out
 
 
@@ -200,10 +199,11 @@ def _network(pts: list) -> dict:
 
 
 def families(problem: str, seed: int = 1, bases: Iterable[dict] = ()) -> list[dict]:
-    """The family cases of ``problem`` (at most :data:`MAX_SIZE` elements each), the special ones
-    first, then every transform of a few lattice configurations and of ``bases`` (cases of the
-    problem, e.g. random small ones), in an order shuffled by ``seed``. Deterministic. An empty list
-    for a problem not known here (a course's own)."""
+    """The family cases of ``problem`` (at most :data:`MAX_SIZE` elements each): every scale and
+    shift of two lattice configurations first, then the special ones (nearly flat, far out, one-ulp
+    nudges) in turn with the scales and shifts of more lattice configurations and of ``bases``
+    (cases of the problem, e.g. random small ones), each base's transforms in an order shuffled by
+    ``seed``. Deterministic. An empty list for a problem not known here (a course's own)."""
     rng = random.Random(seed)
     if problem == "delaunay-3d":
         special = [{"kind": "points", "points": p, "shuffle": False} for p in _special_3d()]
@@ -225,8 +225,9 @@ def families(problem: str, seed: int = 1, bases: Iterable[dict] = ()) -> list[di
         variants = [scaled(b, s) for s in SCALES] + [shifted(b, o) for o in SHIFTS]
         rng.shuffle(variants)
         moved.append(variants)
-    rest = [v for k in range(len(SCALES) + len(SHIFTS)) for vs in moved for v in vs[k:k + 1]]
-    return [c for c in special + rest if size_of(c) <= MAX_SIZE]
+    head = [v for vs in moved[:2] for v in vs]             # every transform of two configurations first
+    rest = [v for k in range(len(SCALES) + len(SHIFTS)) for vs in moved[2:] for v in vs[k:k + 1]]
+    return [c for c in head + interleave(special, rest) if size_of(c) <= MAX_SIZE]
 
 
 def interleave(*lists: Sequence) -> list:
