@@ -94,11 +94,16 @@ def _cmd_judge(a: argparse.Namespace) -> int:
     if not path.is_file():
         raise ValueError(f"submission file {path} does not exist")
     judge = Judge(a.problem, hide=[str(path.resolve().parent)], trusted=True if a.trusted else None)
-    result = judge.judge_path(path, follow_links=True)  # the file named on the command line
-    if a.counterexample_seconds != 0:  # a failing group: a small input of the grader's own the file fails too
-        from .contest.counterexample import attach
+    judge.keep_build = a.counterexample_seconds != 0   # a C++ file's build serves the search too
+    try:
+        result = judge.judge_path(path, follow_links=True)  # the file named on the command line
+        if a.counterexample_seconds != 0:  # a failing group: a small input of the grader's own the file fails too
+            from .contest.counterexample import attach
 
-        attach(result, judge.problem, path, a.counterexample_seconds, trusted=True if a.trusted else None)
+            attach(result, judge.problem, path, a.counterexample_seconds, trusted=True if a.trusted else None,
+                   build_from=judge)
+    finally:
+        judge.drop_build()
     if a.report:
         from .contest.report import write_report
 

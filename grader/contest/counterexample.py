@@ -6,8 +6,11 @@ submission fails too, and show it with the student's answer and the checker's re
 input stays hidden, and the student still gets something to debug. The search is
 :func:`grader.contest.stress.stress` (same batches, same sandbox and limits, each failure judged
 again alone, then shrunk) on **public families only**: the lattice configurations of
-:mod:`grader.problems.smallcases` in another order than the ``exhaustive`` group lists them, then
-:func:`grader.contest.stress.random_case` inputs that grow with time. Never hidden data: an input
+:mod:`grader.problems.smallcases` in another order than the ``exhaustive`` group lists them, in
+turn with the families of :mod:`grader.problems.families` (small inputs scaled, shifted far out,
+nudged by one ulp off a degenerate configuration, nearly flat, beyond a finite super-triangle:
+where floating point fails), then :func:`grader.contest.stress.random_case` inputs that grow
+with time. Never hidden data: an input
 that reads the same as any test of the problem (hidden or sample; compared by
 :func:`grader.contest.stress.normalized` text) is never judged, and the result is checked again
 before it is returned. A solution that is only slow never gets one (TLE is never a
@@ -30,13 +33,14 @@ Example:
 """
 from __future__ import annotations
 
+import random
 import time
 from dataclasses import dataclass
 from pathlib import Path
 
 from ..judging.text import clean
 from ..judging.verdicts import JudgeResult, Verdict
-from ..problems import Problem, load_problem, smallcases
+from ..problems import Problem, families, load_problem, smallcases
 from . import stress as engine
 
 __all__ = ["Counterexample", "search", "attach", "TRIGGERS", "hidden_inputs", "public_first_cases"]
@@ -47,6 +51,8 @@ REASON_MAX_CHARS = 1000
 INPUT_MAX_CHARS = 20_000
 """A counterexample is at most this long (the search's inputs are far smaller): only tests this
 short need comparing, so a problem's large hidden tests are never even read for it."""
+RANDOM_BASES = 8
+"""Random small cases (:func:`grader.contest.stress.random_case`) whose scaled and shifted copies join the families."""
 
 
 @dataclass
@@ -92,11 +98,7 @@ def size_of(case: dict) -> int:
     >>> size_of({"kind": "room", "boundary": [[0, 0], [4, 0], [0, 4]], "holes": [[[1, 1], [2, 1], [1, 2]]]})
     6
     """
-    if isinstance(case.get("operations"), list):
-        return len(case["operations"])
-    if isinstance(case.get("boundary"), list):
-        return len(case["boundary"]) + sum(len(h) for h in case.get("holes") or [])
-    return len(case.get("points") or [])
+    return families.size_of(case)
 
 
 def hidden_inputs(problem: Problem) -> frozenset[str]:
@@ -105,23 +107,31 @@ def hidden_inputs(problem: Problem) -> frozenset[str]:
     return frozenset(engine.normalized(t.input_text) for t in problem.tests() if len(t.input_text) <= INPUT_MAX_CHARS)
 
 
-def public_first_cases(problem: Problem) -> list[dict]:
-    """The first inputs to try: the lattice configurations of :mod:`grader.problems.smallcases`
-    (public code), each with its points in the reverse order, so that they are not the
-    ``exhaustive`` group's tests; none for a problem smallcases does not know."""
+def public_first_cases(problem: Problem, seed: int = 1) -> list[dict]:
+    """The first inputs to try, public code only, deterministic given ``seed``: the families of
+    :mod:`grader.problems.families` (small inputs scaled, shifted, nudged by one ulp, nearly flat
+    or far out, and transforms of :data:`RANDOM_BASES` random small cases) taken in turn with the
+    lattice configurations of :mod:`grader.problems.smallcases`, each with its points in the
+    reverse order so that they are not the ``exhaustive`` group's tests (so neither kind of
+    mistake waits for the other); none for a problem neither module knows."""
     try:
         cases = smallcases.cases_for(problem.id)
     except ValueError:
-        return []
-    return [{**c, "points": c["points"][::-1]} if isinstance(c.get("points"), list) else c for c in cases]
+        cases = []
+    lattice = [{**c, "points": c["points"][::-1]} if isinstance(c.get("points"), list) else c for c in cases]
+    rng = random.Random(seed)
+    bases = [engine.random_case(problem.id, rng, 6) for _ in range(RANDOM_BASES)] if lattice else []
+    return families.interleave(families.families(problem.id, seed, bases), lattice)
 
 
 def search(problem: Problem | str, path: str | Path, seconds: float = 10.0, seed: int = 1, *,
-           trusted: bool | None = None) -> Counterexample | None:
+           trusted: bool | None = None, build_from=None) -> Counterexample | None:
     """A small input (public families only, shrunk) that the submission at ``path`` fails with WA,
     PE or RE, found within ``seconds`` (plus one test's limits), or None. Never the input of a
     test of the problem. ``ValueError`` when the problem has no generator (its reference
-    answers) or ``path`` is not a file. ``trusted``: as :class:`grader.contest.judge.Judge`'s."""
+    answers) or ``path`` is not a file. ``trusted``: as :class:`grader.contest.judge.Judge`'s.
+    ``build_from``: a judge that kept its build of ``path`` (a C++ file is then not compiled
+    again; see :func:`grader.contest.stress.stress`). A compile is not part of ``seconds``."""
     problem = load_problem(problem) if isinstance(problem, str) else problem
     if not seconds > 0:
         raise ValueError(f"counterexample search: seconds must be positive, got {seconds!r}")
@@ -130,8 +140,9 @@ def search(problem: Problem | str, path: str | Path, seconds: float = 10.0, seed
                          "reference answers (the generator stays with the instructor)")
     t0 = time.monotonic()
     hidden = hidden_inputs(problem)
-    failure = engine.stress(problem, path, seconds, seed=seed, first=public_first_cases(problem),
-                            exclude=hidden, verdicts=TRIGGERS, max_chars=INPUT_MAX_CHARS, trusted=trusted)
+    failure = engine.stress(problem, path, seconds, seed=seed, first=public_first_cases(problem, seed),
+                            exclude=hidden, verdicts=TRIGGERS, max_chars=INPUT_MAX_CHARS, trusted=trusted,
+                            build_from=build_from)
     if (failure is None or len(failure.input_text) > INPUT_MAX_CHARS
             or engine.normalized(failure.input_text) in hidden):
         return None  # the engine never judges a test's input: the second check is a guard
@@ -151,19 +162,20 @@ def failing_groups(result: JudgeResult) -> dict[str, str]:
 
 
 def attach(result: JudgeResult, problem: Problem, path: str | Path, seconds: float | None = None,
-           seed: int = 1, *, trusted: bool | None = None) -> Counterexample | None:
+           seed: int = 1, *, trusted: bool | None = None, build_from=None) -> Counterexample | None:
     """Search once for ``result``'s submission when a group failed with WA, PE or RE, and put the
     counterexample on the failing groups (see the module's docstring); nothing when none failed
     so or the budget is 0. ``seconds``: the budget (default: the problem's ``course.yaml``).
     ``result.extra["counterexample_search"]`` says what the search did (found or not, its
-    seconds, or why none ran)."""
+    seconds, or why none ran). ``build_from``: the judge that judged ``result`` with
+    :attr:`~grader.contest.judge.Judge.keep_build` set: its build is reused, not compiled again."""
     budget = problem.counterexample_seconds if seconds is None else seconds
     groups = failing_groups(result)
     if not groups or budget <= 0:
         return None
     t0 = time.monotonic()
     try:
-        cx = search(problem, path, budget, seed, trusted=trusted)
+        cx = search(problem, path, budget, seed, trusted=trusted, build_from=build_from)
     except ValueError as exc:  # no reference answers in this copy of the problem, a vanished file
         result.extra["counterexample_search"] = {"found": False, "seconds": 0.0, "note": str(exc)}
         result.counterexamples.update({g: None for g in groups})

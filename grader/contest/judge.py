@@ -237,6 +237,13 @@ class Judge:
             self._build[2]()
             self._build = None
 
+    def adopt_build(self, other: "Judge") -> None:
+        """Take ``other``'s kept build (see :attr:`keep_build`): this judge reuses it for the same
+        source instead of compiling again, and removes it when done; ``other`` keeps none."""
+        if other._build is not None:
+            self.drop_build()
+            self._build, other._build = other._build, None
+
     def compiled(self, sub: Submission) -> CompileResult:
         """``sub`` compiled in the compile jail; the build is kept until :meth:`drop_build`, the next
         build or the end of this judge (with :attr:`keep_build`, ``stress`` compiles once)."""
@@ -329,12 +336,13 @@ class Judge:
 
     def _answer_text(self, value, parsed, function_mode: bool) -> str:
         """A failing answer as the problem's output text (stdio: as printed; function mode: the
-        parsed answer written by the checker's ``write_output``, else the value as JSON), capped."""
+        parsed answer written by the checker's ``write_output``, else the value as JSON), capped.
+        A function's ``None`` is an answer too (navmesh: no path): written by ``write_output``."""
         if not function_mode:
             text = value if isinstance(value, str) else str(value)
         else:
             text = ""
-            if parsed is not None:
+            if parsed is not None or value is None:
                 try:
                     with cpu_budget(self.check_cpu_s):
                         text = self.problem.checker.write_output(parsed)

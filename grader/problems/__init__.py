@@ -3,6 +3,7 @@
 ========================  =================================================================
 ``package``               a package ``assignments/<id>/``: load, list, validate, materialise tests
 ``smallcases``            exhaustive small cases (``python -m grader.smallcases --write``)
+``families``              small inputs at every scale (scaled, shifted, one-ulp nudges, far out) for the counterexample search
 ``statements``            the statements' generated "Limits and scoring" block
 ``cache``                 the cache of generated tests and parsed YAML: whom it trusts; ``python -m grader warm``
 ========================  =================================================================

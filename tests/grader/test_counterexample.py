@@ -174,8 +174,8 @@ int main() {
 
 
 def test_a_cpp_wrong_solution_goes_through_the_same_path_compiled_once(tmp_path, monkeypatch, capsys):
-    """A C++ program (stdio mode) that repeats a triangle on 3+ points: the judge compiles it once,
-    the search once more (its own judge), and finds the 3-point input; the answer is its output."""
+    """A C++ program (stdio mode) that repeats a triangle on 3+ points: the judge compiles it once
+    and hands the build to the search, which finds the 3-point input; the answer is its output."""
     problem = tiny_problem(tmp_path, exhaustive=[{"kind": "points", "points": [[0, 0], [4, 0], [0, 4], [4, 4]],
                                                   "shuffle": False}])
     path = tmp_path / "wrong.cpp"
@@ -188,7 +188,7 @@ def test_a_cpp_wrong_solution_goes_through_the_same_path_compiled_once(tmp_path,
         return real(*args, **kw)
     monkeypatch.setattr(judge_mod, "compile_source", counted)
     code, out = _cli(monkeypatch, capsys, problem, str(path), "--json", "--counterexample-seconds", "60")
-    assert code == 1 and len(builds) == 2, (builds, out[-2000:])  # the judging's build, then the search's
+    assert code == 1 and len(builds) == 1, (builds, out[-2000:])  # the judging's build serves the search
     cx = json.loads(out)["groups"][0]["counterexample"]
     assert cx["verdict"] == "WA" and cx["size"] == 3 and cx["answer"] == "2\n0 1 2\n0 1 2\n", cx
 
