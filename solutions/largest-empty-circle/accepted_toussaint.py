@@ -203,13 +203,19 @@ def circumcentre(p, a, b, c):
 
 
 def in_hull(H, q, tol):
-    """Is q in the convex polygon H (float vertices, CCW), up to tol? Binary search over the fan."""
-    (x0, y0) = H[0]
+    """Is q in the convex polygon H (float vertices, CCW), up to tol times an edge's length (q may
+    stand outside an edge by that much)? Binary search over the fan. The tolerance is relative to
+    the edge, not absolute: far from the origin a hull can be tiny next to its coordinates (three
+    points near 2^30 one unit apart), and an absolute tolerance then let a circumcentre a whole
+    unit outside the hull count as inside."""
 
     def side(a, b):
         return (b[0] - a[0]) * (q[1] - a[1]) - (b[1] - a[1]) * (q[0] - a[0])
 
-    if side(H[0], H[1]) < -tol or side(H[0], H[-1]) > tol:
+    def outside(a, b):  # beyond edge a -> b by more than tol * |ab|: side = |ab| * signed distance
+        return side(a, b) < -tol * ((b[0] - a[0]) ** 2 + (b[1] - a[1]) ** 2)
+
+    if outside(H[0], H[1]) or outside(H[-1], H[0]):
         return False
     lo, hi = 1, len(H) - 2
     while lo < hi:
@@ -218,7 +224,7 @@ def in_hull(H, q, tol):
             lo = mid
         else:
             hi = mid - 1
-    return side(H[lo], H[lo + 1]) >= -tol
+    return not outside(H[lo], H[lo + 1])
 
 
 def largest_empty_circle(points):
@@ -239,7 +245,7 @@ def largest_empty_circle(points):
     # 1. circumcentres inside the hull (Voronoi vertices)
     for a, b, c in tris:
         cx, cy = circumcentre(p, a, b, c)
-        if in_hull(H, (cx, cy), 1e-15):
+        if in_hull(H, (cx, cy), 1e-12):
             r = min(math.hypot(cx - p[v][0], cy - p[v][1]) for v in (a, b, c))
             best = max(best, (r, -cx, -cy))
     # 2. where Voronoi edges cross the hull: walk each hull edge u -> v through the cells it meets
