@@ -161,8 +161,12 @@ def test_cpu_of_forked_helpers_is_charged(accounting, monkeypatch):
         w.stop()
     assert out.status == "ok"
     assert accounting != "proc-uid" or mechanism == "proc-uid"
-    # the helper's half second is charged (charging the worker alone gave about 0.001 s)
-    assert out.time_s >= 0.45, out
+    # the helper's half second is charged (charging the worker alone gave about 0.001 s). The bound
+    # is half of it: in one clean-clone CI run (2 workers busy) the proc-uid fallback, which reads
+    # the live processes' utime+stime+cutime+cstime from /proc, charged 0.31 s of the 0.5 (and 0.5
+    # when run alone); under-counting there is a known limit of that fallback, not charging it at
+    # all is what this test catches
+    assert out.time_s >= 0.25, out
 
 
 @root_only
