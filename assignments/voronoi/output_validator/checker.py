@@ -15,7 +15,9 @@ vertices lies in the box and in the true cell (no other site is more than eps cl
 its own site: the vertex is equidistant from the sites whose cells meet there); each corner of
 the true cell lies within eps of the received polygon; and the areas agree. Both inclusions
 together bound the distance between the two polygons by eps, so any vertex order, starting
-vertex, or extra vertices on an edge are accepted.
+vertex, or extra vertices on an edge are accepted. With numpy (``bulk``, optional) the cells that
+pass all of this with a margin are picked out at once (``_settled``) and only the others are
+checked one by one: the same verdicts and messages, in less time.
 
 Example:
     >>> args = [[[0.0, 0.0], [2.0, 0.0]], [-1.0, -1.0, 3.0, 1.0]]
