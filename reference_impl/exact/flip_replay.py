@@ -22,10 +22,10 @@ go to ``verify.check_delaunay``, whose verdict does not depend on the order.
 
 Run the doctest: ``python -m pytest --doctest-modules reference_impl/exact/flip_replay.py``
 
->>> import importlib.util, pathlib
->>> here = pathlib.Path(__file__).parent
+>>> import importlib.util
+>>> from grader.judging.checker_runtime import library_file
 >>> def load(name):
-...     spec = importlib.util.spec_from_file_location(name, here / f"{name}.py")
+...     spec = importlib.util.spec_from_file_location(name, library_file(name))
 ...     mod = importlib.util.module_from_spec(spec); spec.loader.exec_module(mod); return mod
 >>> verify, bulk = load("verify"), load("bulk")
 >>> pts, tris = [[0, 0], [4, 0], [4, 1], [0, 3]], [[0, 1, 3], [1, 2, 3]]
