@@ -26,7 +26,7 @@ from typing import Callable
 
 __all__ = ["edge_keys", "same_edge_set", "remembered"]
 
-#: (id(points), id(reference), kind) -> (points, reference, copies of both, data); bounded by _MAX_ROWS rows
+#: (id(points), id(reference)) -> (points, reference, copies of both, {kind: data}); bounded by _MAX_ROWS rows
 _KEPT: dict = {}
 _MAX_ROWS = 4_000_000
 
@@ -43,15 +43,16 @@ def remembered(points: list, reference: list, kind: str, build: Callable[[], obj
     """
     if type(points) is not list or type(reference) is not list:
         return build()
-    key = (id(points), id(reference), kind)
+    key = (id(points), id(reference))
     hit = _KEPT.get(key)
-    if hit is not None and hit[0] is points and hit[1] is reference and hit[2] == points and hit[3] == reference:
-        return hit[4]
-    data = build()
-    if sum(len(h[2]) + len(h[3]) for h in _KEPT.values()) + len(points) + len(reference) > _MAX_ROWS:
-        _KEPT.clear()
-    _KEPT[key] = (points, reference, [list(p) for p in points], [list(e) for e in reference], data)
-    return data
+    if not (hit is not None and hit[0] is points and hit[1] is reference and hit[2] == points and hit[3] == reference):
+        if sum(len(h[2]) + len(h[3]) for h in _KEPT.values()) + len(points) + len(reference) > _MAX_ROWS:
+            _KEPT.clear()
+        hit = _KEPT[key] = (points, reference, [list(p) for p in points], [list(e) for e in reference], {})
+    kept = hit[4]
+    if kind not in kept:
+        kept[kind] = build()
+    return kept[kind]
 
 
 def edge_keys(edges) -> set:
