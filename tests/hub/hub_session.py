@@ -100,6 +100,35 @@ class Hub:
         return "\n".join([t for t in text if having in t][-lines:])
 
 
+def seed_numba_cache(account: str, dest: Path | None = None) -> Path | None:
+    """Copy the instructor's numba cache (``~/.cache/numba``, filled by deploy.sh's ``grader warm``
+    for the shared venv) to ``dest`` (default ``~account/.cache/numba``, the folder the account's
+    server gives numba), owned by ``account`` and private to it (0700); return ``dest``, or None
+    when the instructor has none.
+
+    Test set-up only, to save CI time: without it each account compiled every kernel of the shared
+    venv again on its first check (numba's cache is per account). The source is trusted (written by
+    the instructor's account during the install, mode 0700 in a 0700 home) and the copy is the
+    account's own; numba checks each cached function's source stamp and its own version before
+    using it, so a copy never runs code compiled from other sources.
+    """
+    src = Path(pwd.getpwnam(INSTRUCTOR).pw_dir) / ".cache" / "numba"
+    if not src.is_dir():
+        return None
+    pw = pwd.getpwnam(account)
+    if dest is None:
+        cache = Path(pw.pw_dir) / ".cache"
+        cache.mkdir(mode=0o700, exist_ok=True)
+        os.chown(cache, pw.pw_uid, pw.pw_gid)
+        dest = cache / "numba"
+    shutil.rmtree(dest, ignore_errors=True)
+    shutil.copytree(src, dest, symlinks=False)
+    for p in [dest, *dest.rglob("*")]:
+        os.lchown(p, pw.pw_uid, pw.pw_gid)
+        os.chmod(p, 0o700 if p.is_dir() else 0o600)
+    return dest
+
+
 def start_hub(timeout: float = 240) -> Hub:
     """Install the deployment into a fresh COURSE_HOME and start the hub; return when it answers."""
     home = Path(tempfile.mkdtemp(prefix="course-hub-"))
@@ -114,7 +143,8 @@ def start_hub(timeout: float = 240) -> Hub:
         # a fresh class: nothing fetched, submitted or cached by an earlier run (nbgrader lists an
         # assignment as "submitted" from the student's own nbgrader_cache under ~/.local). Emptied
         # before the install, so the class then finds what the install leaves: the instructor's
-        # test and numba caches that deploy.sh fills, as on a real deployment.
+        # test and numba caches that deploy.sh fills, as on a real deployment (the students' numba
+        # caches are then seeded from the instructor's: seed_numba_cache).
         try:
             h = Path(pwd.getpwnam(u).pw_dir)
         except KeyError:  # the install makes the account
@@ -126,6 +156,8 @@ def start_hub(timeout: float = 240) -> Hub:
                 else:
                     entry.unlink(missing_ok=True)
     subprocess.run([str(DEPLOY), "install"], env=env, check=True, timeout=900)
+    for u in STUDENTS:
+        seed_numba_cache(u)
     log = home / "hub.log"
     with open(log, "w") as f:
         proc = subprocess.Popen([str(DEPLOY), "start"], env=env, stdout=f, stderr=subprocess.STDOUT,
