@@ -31,6 +31,7 @@ import re
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 from concurrent.futures import ProcessPoolExecutor, as_completed
 from datetime import datetime, timedelta, timezone
@@ -58,6 +59,7 @@ STORE_NAME = "judged.sqlite"
 _FLOAT = re.compile(r"(?<![\w.])[-+]?(?:\d+\.\d*|\.\d+|\d+(?=[eE]))(?:[eE][-+]?\d+)?|\b(?:inf|nan)\b")
 _problems: dict[str, Problem] = {}
 _fps: dict[str, dict] = {}
+_judges: dict[tuple, Judge] = {}
 
 
 def mask_numbers(message: str) -> str:
@@ -74,6 +76,18 @@ def _problem(problem_id: str) -> Problem:
     if key not in _problems:
         _problems[key] = load_problem(problem_id)
     return _problems[key]
+
+
+def _judge(problem: Problem, hide: list[str]) -> Judge:
+    """This process's (and thread's) judge of ``problem``, hiding ``hide`` for the next submission:
+    one judge per problem keeps the tests' parsed inputs, answers and encoded arguments from one
+    student to the next (a class judged in a pool parses them once per worker, not once a student)."""
+    key = (str(problem.path.resolve()), problem.id, threading.get_ident())
+    judge = _judges.get(key)
+    if judge is None or judge.problem is not problem:
+        judge = _judges[key] = Judge(problem)
+    judge.hide = list(hide)
+    return judge
 
 
 def nbgrader_course_root(config) -> Path:
@@ -154,7 +168,7 @@ def judge_notebook_file(problem_id: str, path: Path, student: str, store_path: P
         prior = store.prior(student, problem.id, key)
         store.begin(student, problem.id, str(path), key, time.time() if submitted_at is None else submitted_at,
                     json.dumps(fps, sort_keys=True))
-        judge = Judge(problem, hide=[*hide, str(path.resolve().parent), str(store_path.resolve().parent)])
+        judge = _judge(problem, [*hide, str(path.resolve().parent), str(store_path.resolve().parent)])
         result = judge.judge_path(path, on_test=lambda r: store.add_test(student, problem.id, key, r), prior=prior)
         store.finish(student, problem.id, key, result)
         return result
@@ -359,10 +373,12 @@ def _judge_job(problem_id: str, student: str, path: str, store_path: str, hide: 
 
 
 def grade_course(problem_id: str, submitted: str | Path, jobs: int = 1, autograde: bool = True,
-                 progress: TextIO | None = None, counterexample_seconds: float | None = 0.0) -> list[dict]:
+                 progress: TextIO | None = None, counterexample_seconds: float | None = 0.0,
+                 scheduler: str | None = None) -> list[dict]:
     """Judge every collected notebook ``submitted/<student>/<id>/<id>.ipynb`` in a pool of ``jobs``
-    processes, then run ``nbgrader autograde`` (which finds the results stored and writes the same
-    gradebook entries, autograded notebooks and late penalties as a one-by-one run).
+    processes (or, with ``scheduler``, on that Dask distributed cluster: :mod:`.course_dask`), then
+    run ``nbgrader autograde`` (which finds the results stored and writes the same gradebook
+    entries, autograded notebooks and late penalties as a one-by-one run).
 
     ``progress`` (a stream, e.g. ``sys.stderr``) gets a line per judged notebook and one around
     ``nbgrader autograde``. After autograde each summary also holds the gradebook's
@@ -378,7 +394,8 @@ def grade_course(problem_id: str, submitted: str | Path, jobs: int = 1, autograd
     if not submitted.is_dir():
         raise ValueError(f"{submitted} is not a directory (expected nbgrader's submitted/<student>/{problem_id}/)")
     with using_course(submitted.parent, problem_id) as course_root:  # the course that submitted/ belongs to
-        return _grade_course(problem_id, submitted, course_root, jobs, autograde, progress, counterexample_seconds)
+        return _grade_course(problem_id, submitted, course_root, jobs, autograde, progress, counterexample_seconds,
+                             scheduler)
 
 
 def _say(progress: TextIO | None, text: str) -> None:
@@ -404,7 +421,8 @@ def gradebook_scores(course_root: Path, problem_id: str, students: list[str]) ->
 
 
 def _grade_course(problem_id: str, submitted: Path, course_root: Path, jobs: int, autograde: bool,
-                  progress: TextIO | None = None, counterexample_seconds: float | None = None) -> list[dict]:
+                  progress: TextIO | None = None, counterexample_seconds: float | None = None,
+                  scheduler: str | None = None) -> list[dict]:
     problem = _problem(problem_id)
     problem.tests()  # materialise the hidden tests once, before the workers start
     store_path = course_root / STORE_NAME
@@ -412,7 +430,28 @@ def _grade_course(problem_id: str, submitted: Path, course_root: Path, jobs: int
     hide = (str(submitted), str(course_root))
     out = []
     collected = _collected(submitted, problem_id)
-    _say(progress, f"{problem_id}: judging {len(collected)} collected notebook(s) from {submitted}, {max(1, jobs)} at a time")
+    if scheduler:
+        from .course_dask import judge_on_dask
+
+        _say(progress, f"{problem_id}: judging {len(collected)} collected notebook(s) from {submitted} on {scheduler}")
+        out = judge_on_dask(problem_id, collected, store_path, scheduler, hide, say=lambda line: _say(progress, line))
+    else:
+        _say(progress, f"{problem_id}: judging {len(collected)} collected notebook(s) from {submitted}, "
+                       f"{max(1, jobs)} at a time")
+        out = _judge_pool(problem_id, collected, store_path, hide, jobs, progress)
+    store = ResultStore(store_path)
+    try:
+        for d in regrade.finish(store, problem_id):  # whose score moved since the tests were changed
+            _say(progress, f"{problem_id}: regraded " + regrade.diff_line(d))
+    finally:
+        store.close()
+    return _autograde_and_search(problem, submitted, course_root, store_path, collected, out, jobs, autograde,
+                                 progress, counterexample_seconds)
+
+
+def _judge_pool(problem_id: str, collected: list[tuple[str, Path]], store_path: Path, hide: tuple[str, ...],
+                jobs: int, progress: TextIO | None) -> list[dict]:
+    out: list[dict] = []
     with ProcessPoolExecutor(max_workers=max(1, jobs)) as pool:
         futures = {pool.submit(_judge_job, problem_id, s, str(p), str(store_path), hide): s for s, p in collected}
         for fut in as_completed(futures):
@@ -426,12 +465,14 @@ def _grade_course(problem_id: str, submitted: Path, course_root: Path, jobs: int
             r = out[-1]
             _say(progress, f"[{len(out)}/{len(collected)}] {r['student']}: {r['verdict']} "
                            f"{r.get('score', '')}/{r.get('max_score', '')}")
-    store = ResultStore(store_path)
-    try:
-        for d in regrade.finish(store, problem_id):  # whose score moved since the tests were changed
-            _say(progress, f"{problem_id}: regraded " + regrade.diff_line(d))
-    finally:
-        store.close()
+    return out
+
+
+def _autograde_and_search(problem: Problem, submitted: Path, course_root: Path, store_path: Path,
+                          collected: list[tuple[str, Path]], out: list[dict], jobs: int, autograde: bool,
+                          progress: TextIO | None, counterexample_seconds: float | None) -> list[dict]:
+    """nbgrader autograde from the stored results (the scores), then the counterexample searches."""
+    problem_id = problem.id
     if autograde:
         _say(progress, f"{problem_id}: nbgrader autograde --force in {course_root} ({len(collected)} notebook(s); "
                        "it reads the stored results and applies the late policy)")
