@@ -1,8 +1,11 @@
 """Students per minute: a synthetic class of one problem autograded the course's way vs nbgrader's kernel way.
 
 The class: N submissions of one problem (`--problem`, default `bowyer-watson-timed`; the course's
-released notebook, alternating an accepted solution and the tutorial's wrong code in the first
-solution cell), collected into identical course roots. Side by side:
+released notebook, alternating an accepted solution and a wrong one (`--wrong`; default: the
+tutorial's code on `bowyer-watson-timed`, which fails every group, one by a TLE of the 6 s limit;
+on `delaunay` `wrong_super_float.py`, a WA on one group: the tutorial's code there TLEs on three
+groups, 18 CPU-s a student whatever the grader does) in the first solution cell), collected into
+identical course roots. Side by side:
   * the course's path: `grade_course` (the sandboxed judge, `--jobs` workers, then `nbgrader autograde`
     from the stored results), what formgrader's Autograde runs on the course server;
   * with `--dask N`, the same path on a local Dask distributed cluster of N worker processes
@@ -34,7 +37,7 @@ from grader.problems import load_problem  # noqa: E402
 
 #: per problem: (accepted, wrong) under solutions/<problem>/
 CLASSES = {"bowyer-watson-timed": ("accepted_scan.py", "wrong_tutorial.py"),
-           "delaunay": ("accepted_walk.py", "wrong_tutorial.py")}
+           "delaunay": ("accepted_walk.py", "wrong_super_float.py")}
 PLAIN = """
 # benchmark only: nbgrader's own kernel execution instead of the course's judge
 from nbgrader.preprocessors import Execute
@@ -64,6 +67,7 @@ def main() -> int:
     ap.add_argument("--students", type=int, default=200)
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--problem", default="bowyer-watson-timed", choices=sorted(CLASSES))
+    ap.add_argument("--wrong", help="the wrong solution under solutions/PROBLEM/ (default: see above)")
     ap.add_argument("--dask", type=int, default=0, metavar="N",
                     help="also grade the class on a local Dask cluster of N worker processes")
     ap.add_argument("--searches", action="store_true", help="then time the counterexample searches (reported apart)")
@@ -75,7 +79,8 @@ def main() -> int:
         raise ValueError("--dask must be 0 (no Dask run) or a number of workers")
     problem = a.problem
     load_problem(problem).tests()
-    right, wrong = (_solution(name, problem) for name in CLASSES[problem])
+    names = (CLASSES[problem][0], a.wrong or CLASSES[problem][1])
+    right, wrong = (_solution(name, problem) for name in names)
     klass = [Student(f"s{k:03d}", right if k % 2 == 0 else wrong) for k in range(a.students)]
     print(f"load average at the start: {' '.join(f'{x:.2f}' for x in os.getloadavg())}", flush=True)
     times: dict[str, float] = {}
@@ -109,7 +114,7 @@ def main() -> int:
     labels = {"course": f"course path (sandboxed judge, --jobs {a.jobs}, then nbgrader autograde)",
               "dask": f"course path on a local Dask cluster ({a.dask} worker processes)",
               "plain": "nbgrader plain kernel autograde (one by one)"}
-    print(f"{n} submissions of {problem} on this machine:")
+    print(f"{n} submissions of {problem} on this machine ({names[0]} and {names[1]} alternating):")
     for k, v in times.items():
         ratio = f"  x{rate[k] / rate['plain']:.2f} stock" if "plain" in rate and k != "plain" else ""
         print(f"  {labels[k]:70} {v:7.1f} s  {rate[k]:6.1f} students/min{ratio}")
