@@ -146,7 +146,7 @@ def _cmd_grade(a: argparse.Namespace) -> int:
         from .course.nbgrader_autograde import grade_course
 
         summaries = grade_course(a.problem, a.submissions, jobs=a.jobs, progress=None if a.quiet else sys.stderr,
-                                 counterexample_seconds=a.counterexample_seconds)
+                                 counterexample_seconds=a.counterexample_seconds, scheduler=a.scheduler)
     else:
         summaries = grade_class(a.problem, a.submissions, a.db, jobs=a.jobs, scheduler=a.scheduler, csv_path=a.csv,
                                 report_dir=a.reports, progress=not a.quiet, diff_path=a.diff,

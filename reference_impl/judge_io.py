@@ -15,6 +15,7 @@ Run the doctests: python -m pytest reference_impl/judge_io.py
 >>> read_index_rows("1\\n0 1\\n", 2, "edge", max_rows=5)
 [[0, 1]]
 """
+import itertools
 import math
 import re
 
@@ -232,8 +233,8 @@ def index_rows(value, width: int, what: str, max_rows: int) -> list:
         raise PresentationError(f"{len(value)} {what}s is more than any correct answer has (at most {max_rows})",
                                 kind=f"more {what}s than any correct answer has")
     if value and set(map(type, value)) == {list} and set(map(len, value)) == {width}:  # fast path, C loops
-        if set(map(type, [v for row in value for v in row])) == {int}:
-            return list(map(list, value))
+        if set(map(type, itertools.chain.from_iterable(value))) == {int}:
+            return value  # exactly lists of ints: used as it is (a copy would only feed the garbage collector)
     out = []
     for k, row in enumerate(value):
         if not isinstance(row, list) or len(row) != width:

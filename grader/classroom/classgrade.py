@@ -32,6 +32,7 @@ import json
 import os
 import signal
 import sys
+import threading
 import time
 from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from dataclasses import dataclass
@@ -178,8 +179,10 @@ def _die_with_parent(parent: int) -> None:
 _judges: dict[tuple, Judge] = {}
 
 
-def _judge_for(problem: str, hide: tuple[str, ...]) -> Judge:
-    key = (problem, hide)
+def _judge_for(problem: str, hide: tuple[str, ...], per_thread: bool = False) -> Judge:
+    """This process's judge of ``problem`` hiding ``hide`` (``per_thread``: one per thread, for a
+    caller that sets the judge's ``hide`` per submission, as a Dask worker with threads does)."""
+    key = (problem, hide, threading.get_ident() if per_thread else None)
     if key not in _judges:
         _judges[key] = Judge(problem, hide=list(hide))
     return _judges[key]
@@ -205,14 +208,18 @@ def grade_local(problem: str, job: Job, db_path: str, hide: tuple[str, ...], rep
         store.close()
 
 
-def grade_remote(problem: str, student: str, filename: str, data: bytes, prior: list[dict]) -> dict:
-    """Dask worker side: judge source bytes sent by the client; return plain data."""
+def grade_remote(problem: str, student: str, filename: str, data: bytes, prior: list[dict],
+                 hide: tuple[str, ...] = ()) -> dict:
+    """Dask worker side: judge source bytes sent by the client; return plain data. ``hide``: the
+    client's folders (submissions, results) that the jail must also hide where this worker has them
+    (a worker on the client's own machine, as in a local cluster)."""
     import tempfile
 
     with tempfile.TemporaryDirectory(prefix="grader-remote-") as tmp:
         path = Path(tmp) / filename
         path.write_bytes(data)
-        judge = _judge_for(problem, (tmp,))
+        judge = _judge_for(problem, (), per_thread=True)  # one per problem: its parsed tests are kept
+        judge.hide = [tmp, *(h for h in hide if os.path.exists(h))]
         result = judge.judge_path(path, prior={d["name"]: TestResult.from_json(d) for d in prior})
     out = result.to_json()
     out["student"] = student

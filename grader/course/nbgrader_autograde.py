@@ -31,6 +31,7 @@ import re
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 from concurrent.futures import ProcessPoolExecutor, as_completed
 from datetime import datetime, timedelta, timezone
@@ -51,13 +52,14 @@ from ..classroom import regrade
 from ..classroom.regrade import fingerprints, version
 from ..classroom.class_counterexamples import pending, run_searches
 from ..classroom.store import ResultStore
-from ..judging.submissions import Submission, SubmissionError
+from ..judging.submissions import Submission, SubmissionError, read_submission_bytes
 from ..judging.verdicts import DESCRIPTIONS, JudgeResult, TestResult, Verdict
 
 STORE_NAME = "judged.sqlite"
 _FLOAT = re.compile(r"(?<![\w.])[-+]?(?:\d+\.\d*|\.\d+|\d+(?=[eE]))(?:[eE][-+]?\d+)?|\b(?:inf|nan)\b")
 _problems: dict[str, Problem] = {}
 _fps: dict[str, dict] = {}
+_judges: dict[tuple, Judge] = {}
 
 
 def mask_numbers(message: str) -> str:
@@ -74,6 +76,18 @@ def _problem(problem_id: str) -> Problem:
     if key not in _problems:
         _problems[key] = load_problem(problem_id)
     return _problems[key]
+
+
+def _judge(problem: Problem, hide: list[str]) -> Judge:
+    """This process's (and thread's) judge of ``problem``, hiding ``hide`` for the next submission:
+    one judge per problem keeps the tests' parsed inputs, answers and encoded arguments from one
+    student to the next (a class judged in a pool parses them once per worker, not once a student)."""
+    key = (str(problem.path.resolve()), problem.id, threading.get_ident())
+    judge = _judges.get(key)
+    if judge is None or judge.problem is not problem:
+        judge = _judges[key] = Judge(problem)
+    judge.hide = list(hide)
+    return judge
 
 
 def nbgrader_course_root(config) -> Path:
@@ -127,34 +141,46 @@ def collection_time(folder: Path) -> float | None:
         return None
 
 
-def judge_notebook_file(problem_id: str, path: Path, student: str, store_path: Path,
-                        hide: tuple[str, ...] = (), submitted_at: float | None = None) -> JudgeResult:
-    """Judge one notebook file like ``python -m grader judge`` does, reusing stored results of the
-    same code. ``submitted_at``: nbgrader's collection time (default: now, on the grader's clock)."""
-    problem = _problem(problem_id)
+def _prepare(problem: Problem, path: Path, student: str, store: ResultStore,
+             submitted_at: float | None) -> tuple[str, dict[str, TestResult], JudgeResult | None]:
+    """A notebook about to be judged: (its store key, the test results already stored under it, the
+    whole stored result when every test is stored (nothing to judge)). Otherwise the submission is
+    recorded as started (results carried over from an earlier version of the tests, and a regrade
+    begun, when only some groups changed)."""
     try:
         code = Submission.from_path(path).source
     except SubmissionError:  # the judge gives it CE; key it by its bytes
         code = "\0raw\0" + hashlib.sha256(path.read_bytes()).hexdigest()
     key = code_key(problem, code)
+    prior = store.prior(student, problem.id, key)
+    if store.is_done(student, problem.id, key) and len(prior) == len(problem.tests()):
+        return key, prior, JudgeResult(problem.id, str(path), [prior[t.name] for t in problem.tests()],
+                                       problem.group_points)
+    _adopt_legacy(store, student, problem, code, key)
+    fps = _fingerprints(problem)
+    prev, changed = regrade.carry_over(store, student, problem, key.split("-")[0], key, fps)
+    if prev is not None:
+        regrade.start(store, problem.id, student, prev, key, changed)
+    prior = store.prior(student, problem.id, key)
+    store.begin(student, problem.id, str(path), key, time.time() if submitted_at is None else submitted_at,
+                json.dumps(fps, sort_keys=True))
+    return key, prior, None
+
+
+def judge_notebook_file(problem_id: str, path: Path, student: str, store_path: Path,
+                        hide: tuple[str, ...] = (), submitted_at: float | None = None) -> JudgeResult:
+    """Judge one notebook file like ``python -m grader judge`` does, reusing stored results of the
+    same code. ``submitted_at``: nbgrader's collection time (default: now, on the grader's clock)."""
+    problem = _problem(problem_id)
     store = ResultStore(store_path)
     try:
-        prior = store.prior(student, problem.id, key)
-        if store.is_done(student, problem.id, key) and len(prior) == len(problem.tests()):
-            result = JudgeResult(problem.id, str(path), [prior[t.name] for t in problem.tests()], problem.group_points)
+        key, prior, done = _prepare(problem, path, student, store, submitted_at)
+        if done is not None:
             stored = store.counterexamples(student, problem.id, key)  # searched after the class was judged
             if stored is not None:
-                result.counterexamples, result.extra["counterexample_search"] = stored
-            return result
-        _adopt_legacy(store, student, problem, code, key)
-        fps = _fingerprints(problem)
-        prev, changed = regrade.carry_over(store, student, problem, key.split("-")[0], key, fps)
-        if prev is not None:
-            regrade.start(store, problem.id, student, prev, key, changed)
-        prior = store.prior(student, problem.id, key)
-        store.begin(student, problem.id, str(path), key, time.time() if submitted_at is None else submitted_at,
-                    json.dumps(fps, sort_keys=True))
-        judge = Judge(problem, hide=[*hide, str(path.resolve().parent), str(store_path.resolve().parent)])
+                done.counterexamples, done.extra["counterexample_search"] = stored
+            return done
+        judge = _judge(problem, [*hide, str(path.resolve().parent), str(store_path.resolve().parent)])
         result = judge.judge_path(path, on_test=lambda r: store.add_test(student, problem.id, key, r), prior=prior)
         store.finish(student, problem.id, key, result)
         return result
@@ -359,10 +385,12 @@ def _judge_job(problem_id: str, student: str, path: str, store_path: str, hide: 
 
 
 def grade_course(problem_id: str, submitted: str | Path, jobs: int = 1, autograde: bool = True,
-                 progress: TextIO | None = None, counterexample_seconds: float | None = 0.0) -> list[dict]:
+                 progress: TextIO | None = None, counterexample_seconds: float | None = 0.0,
+                 scheduler: str | None = None) -> list[dict]:
     """Judge every collected notebook ``submitted/<student>/<id>/<id>.ipynb`` in a pool of ``jobs``
-    processes, then run ``nbgrader autograde`` (which finds the results stored and writes the same
-    gradebook entries, autograded notebooks and late penalties as a one-by-one run).
+    processes (or, with ``scheduler``, on that Dask distributed cluster: :mod:`.course_dask`), then
+    run ``nbgrader autograde`` (which finds the results stored and writes the same gradebook
+    entries, autograded notebooks and late penalties as a one-by-one run).
 
     ``progress`` (a stream, e.g. ``sys.stderr``) gets a line per judged notebook and one around
     ``nbgrader autograde``. After autograde each summary also holds the gradebook's
@@ -378,7 +406,8 @@ def grade_course(problem_id: str, submitted: str | Path, jobs: int = 1, autograd
     if not submitted.is_dir():
         raise ValueError(f"{submitted} is not a directory (expected nbgrader's submitted/<student>/{problem_id}/)")
     with using_course(submitted.parent, problem_id) as course_root:  # the course that submitted/ belongs to
-        return _grade_course(problem_id, submitted, course_root, jobs, autograde, progress, counterexample_seconds)
+        return _grade_course(problem_id, submitted, course_root, jobs, autograde, progress, counterexample_seconds,
+                             scheduler)
 
 
 def _say(progress: TextIO | None, text: str) -> None:
@@ -404,7 +433,8 @@ def gradebook_scores(course_root: Path, problem_id: str, students: list[str]) ->
 
 
 def _grade_course(problem_id: str, submitted: Path, course_root: Path, jobs: int, autograde: bool,
-                  progress: TextIO | None = None, counterexample_seconds: float | None = None) -> list[dict]:
+                  progress: TextIO | None = None, counterexample_seconds: float | None = None,
+                  scheduler: str | None = None) -> list[dict]:
     problem = _problem(problem_id)
     problem.tests()  # materialise the hidden tests once, before the workers start
     store_path = course_root / STORE_NAME
@@ -412,7 +442,26 @@ def _grade_course(problem_id: str, submitted: Path, course_root: Path, jobs: int
     hide = (str(submitted), str(course_root))
     out = []
     collected = _collected(submitted, problem_id)
-    _say(progress, f"{problem_id}: judging {len(collected)} collected notebook(s) from {submitted}, {max(1, jobs)} at a time")
+    if scheduler:
+        _say(progress, f"{problem_id}: judging {len(collected)} collected notebook(s) from {submitted} on {scheduler}")
+        out = _judge_dask(problem, collected, store_path, scheduler, hide, progress)
+    else:
+        _say(progress, f"{problem_id}: judging {len(collected)} collected notebook(s) from {submitted}, "
+                       f"{max(1, jobs)} at a time")
+        out = _judge_pool(problem_id, collected, store_path, hide, jobs, progress)
+    store = ResultStore(store_path)
+    try:
+        for d in regrade.finish(store, problem_id):  # whose score moved since the tests were changed
+            _say(progress, f"{problem_id}: regraded " + regrade.diff_line(d))
+    finally:
+        store.close()
+    return _autograde_and_search(problem, submitted, course_root, store_path, collected, out, jobs, autograde,
+                                 progress, counterexample_seconds)
+
+
+def _judge_pool(problem_id: str, collected: list[tuple[str, Path]], store_path: Path, hide: tuple[str, ...],
+                jobs: int, progress: TextIO | None) -> list[dict]:
+    out: list[dict] = []
     with ProcessPoolExecutor(max_workers=max(1, jobs)) as pool:
         futures = {pool.submit(_judge_job, problem_id, s, str(p), str(store_path), hide): s for s, p in collected}
         for fut in as_completed(futures):
@@ -426,12 +475,65 @@ def _grade_course(problem_id: str, submitted: Path, course_root: Path, jobs: int
             r = out[-1]
             _say(progress, f"[{len(out)}/{len(collected)}] {r['student']}: {r['verdict']} "
                            f"{r.get('score', '')}/{r.get('max_score', '')}")
+    return out
+
+
+def _summary(student: str, result: JudgeResult) -> dict:
+    return {"student": student, "verdict": result.verdict, "score": result.score, "max_score": result.max_score}
+
+
+def _judge_dask(problem: Problem, collected: list[tuple[str, Path]], store_path: Path, scheduler: str,
+                hide: tuple[str, ...], progress: TextIO | None) -> list[dict]:
+    """The class on a Dask cluster (:mod:`.course_dask`): each notebook keyed and recorded here as
+    :func:`judge_notebook_file` does, judged on a worker, its results stored here when it returns."""
+    from .course_dask import RemoteJob, judge_remote_jobs
+
+    out, jobs = [], []
     store = ResultStore(store_path)
     try:
-        for d in regrade.finish(store, problem_id):  # whose score moved since the tests were changed
-            _say(progress, f"{problem_id}: regraded " + regrade.diff_line(d))
+        for student, path in collected:
+            key, prior, done = _prepare(problem, path, student, store, collection_time(path.parent))
+            if done is not None:
+                out.append(_summary(student, done))
+                continue
+            try:
+                data = read_submission_bytes(path)
+            except SubmissionError:  # judged here: no code runs, the verdict is CE with the reason
+                result = _judge(problem, [*hide, str(path.parent)]).judge_path(path, prior=prior)
+                _commit(store, student, problem.id, key, result)
+                out.append(_summary(student, result))
+                continue
+            jobs.append(RemoteJob(student, str(path), key, data, [r.to_json() for r in prior.values()]))
+
+        def done_one(job, tests: list[TestResult] | None, error: str) -> None:
+            if tests is None:  # a worker fault: nbgrader autograde judges that notebook again
+                out.append({"student": job.student, "verdict": "JE", "error": error})
+            else:
+                result = JudgeResult(problem.id, job.path, tests, problem.group_points)
+                _commit(store, job.student, problem.id, job.key, result)
+                out.append(_summary(job.student, result))
+            r = out[-1]
+            _say(progress, f"[{len(out)}/{len(collected)}] {r['student']}: {r['verdict']} "
+                           f"{r.get('score', '')}/{r.get('max_score', '')}")
+
+        _say(progress, f"{problem.id}: {len(jobs)} notebook(s) sent to the Dask cluster at {scheduler}")
+        judge_remote_jobs(problem.id, jobs, scheduler, hide, done_one)
     finally:
         store.close()
+    return out
+
+
+def _commit(store: ResultStore, student: str, problem_id: str, key: str, result: JudgeResult) -> None:
+    for t in result.tests:
+        store.add_test(student, problem_id, key, t)
+    store.finish(student, problem_id, key, result)
+
+
+def _autograde_and_search(problem: Problem, submitted: Path, course_root: Path, store_path: Path,
+                          collected: list[tuple[str, Path]], out: list[dict], jobs: int, autograde: bool,
+                          progress: TextIO | None, counterexample_seconds: float | None) -> list[dict]:
+    """nbgrader autograde from the stored results (the scores), then the counterexample searches."""
+    problem_id = problem.id
     if autograde:
         _say(progress, f"{problem_id}: nbgrader autograde --force in {course_root} ({len(collected)} notebook(s); "
                        "it reads the stored results and applies the late policy)")

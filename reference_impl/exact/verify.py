@@ -32,6 +32,7 @@ from __future__ import annotations
 
 from typing import Iterable, Sequence
 
+import itertools
 import math
 import operator
 
@@ -350,13 +351,16 @@ def indexed_predicates(points) -> tuple:
             lambda a, b, c, d: incircle_exact(P[a], P[b], P[c], P[d]))
 
 
-def _int_rows(triangles, n: int, width: int) -> list | None:
-    """The rows when they are ``width`` ints in 0..n-1 each (checked in bulk), else None."""
+def _int_rows(triangles, n: int, width: int, check_range: bool = True) -> list | None:
+    """The rows when they are ``width`` ints in 0..n-1 each (checked in C loops), else None
+    (``check_range=False``: ints of any value, for a caller that checks the range itself)."""
     rows = triangles if type(triangles) is list else _rows(triangles)
-    if not all((type(t) is list or type(t) is tuple) and len(t) == width for t in rows):
+    if not rows:
+        return rows
+    if not set(map(type, rows)) <= {list, tuple} or set(map(len, rows)) != {width}:
         return None
-    flat = [v for t in rows for v in t]
-    if flat and ({type(v) for v in flat} != {int} or min(flat) < 0 or max(flat) >= n):
+    flat = itertools.chain.from_iterable
+    if set(map(type, flat(rows))) != {int} or (check_range and (min(flat(rows)) < 0 or max(flat(rows)) >= n)):
         return None
     return rows
 
@@ -364,11 +368,15 @@ def _int_rows(triangles, n: int, width: int) -> list | None:
 def _delaunay_accepts(points, triangles, bulk=None) -> bool:
     """True only when every check of :func:`_check_delaunay_integers` passes (False: ask it why)."""
     P, F, rep, n_distinct, hull_edges, flat, tame, arrays = _prepared(points, "2d", _prepare_2d)
-    rows = _int_rows(triangles, len(P), 3)
+    use_bulk = bulk is not None and bulk.AVAILABLE and tame and not flat and len(P) < 1 << 31
+    rows = _int_rows(triangles, len(P), 3, check_range=not use_bulk)
     if rows is None:
         return False
-    if bulk is not None and bulk.AVAILABLE and tame and not flat and len(rows) >= 16 and len(P) < 1 << 31:
+    if use_bulk and len(rows) >= 16:
         return _delaunay_accepts_bulk(bulk, P, F, rep, n_distinct, hull_edges, arrays, rows)
+    if use_bulk and rows and (min(itertools.chain.from_iterable(rows)) < 0
+                              or max(itertools.chain.from_iterable(rows)) >= len(P)):
+        return False
     T = [(rep[a], rep[b], rep[c]) for a, b, c in rows]
     if flat:
         return not T
@@ -406,7 +414,10 @@ def _delaunay_accepts_bulk(bulk, P, F, rep, n_distinct, hull_edges, arrays, rows
         arrays.update(x=xy[:, 0].copy(), y=xy[:, 1].copy(), rep=np.array(rep, dtype=np.int64),
                       hull=np.sort(np.array([u * n + v for u, v in hull_edges], dtype=np.int64)))
     X, Y = arrays["x"], arrays["y"]
-    t = arrays["rep"][np.array(rows, dtype=np.int64).reshape(-1, 3)]
+    ids = np.fromiter(itertools.chain.from_iterable(rows), np.int64, 3 * len(rows))
+    if ids.min() < 0 or ids.max() >= n:
+        return False
+    t = arrays["rep"][ids.reshape(-1, 3)]
     a, b, c = t[:, 0], t[:, 1], t[:, 2]
     s = bulk.orient2d(X[a], Y[a], X[b], Y[b], X[c], Y[c])
     for k in np.flatnonzero(s == 0).tolist():
@@ -414,6 +425,8 @@ def _delaunay_accepts_bulk(bulk, P, F, rep, n_distinct, hull_edges, arrays, rows
     if (s <= 0).any():
         return False
     u, v, w = np.concatenate((a, b, c)), np.concatenate((b, c, a)), np.concatenate((c, a, b))
+    if n < _PACKED_MAX_N:
+        return _edges_accept_packed(bulk, P, n, n_distinct, arrays, t, u, v, w)
     key = u * n + v
     order = np.argsort(key)
     ks = key[order]
@@ -431,6 +444,51 @@ def _delaunay_accepts_bulk(bulk, P, F, rep, n_distinct, hull_edges, arrays, rows
     s = bulk.incircle(X[uu], Y[uu], X[vv], Y[vv], X[ww], Y[ww], X[xx], Y[xx])
     for k in np.flatnonzero(s == 0).tolist():
         s[k] = incircle_exact(P[uu[k]], P[vv[k]], P[ww[k]], P[xx[k]])
+    return not (s > 0).any()
+
+
+#: below this many points, an edge and its third vertex pack into one int64 (:func:`_edges_accept_packed`)
+_PACKED_MAX_N = 1 << 20
+
+
+def _edges_accept_packed(bulk, P, n, n_distinct, arrays, t, u, v, w) -> bool:
+    """The edge half of :func:`_delaunay_accepts_bulk` with one sort: each directed edge (u, v) of a
+    triangle whose third vertex is w becomes one integer ((min * n + max) * n + w) * 2 + (u > v)
+    (below 2^63 for n < 2^20), so that after sorting, the two sides of an undirected edge sit side
+    by side. An edge with three or more sides, or two sides in one direction, is a directed edge
+    used twice; a lone side is a one-sided edge; a pair gives the in-circle test of (u, v, w)
+    against x, the third vertex across (u < v), the same tests as the searchsorted pairing."""
+    np = bulk.np
+    lo, hi = np.minimum(u, v), np.maximum(u, v)
+    packed = ((lo * n + hi) * n + w) * 2 + (u > v)
+    packed.sort()
+    k, rest = np.divmod(packed, 2 * n)          # k = lo * n + hi; rest = w * 2 + (u > v)
+    third, back = rest >> 1, rest & 1
+    same = k[1:] == k[:-1]
+    if (same[1:] & same[:-1]).any():
+        return False  # three sides of one edge: a directed edge used twice
+    first = np.flatnonzero(same)                # pairs (first, first + 1)
+    if (back[first] == back[first + 1]).any():
+        return False  # both sides in one direction: a directed edge used twice
+    lone = np.ones(len(k), dtype=bool)
+    lone[first] = False
+    lone[first + 1] = False
+    kl, bl = k[lone], back[lone]
+    one_sided = np.where(bl == 0, kl, (kl % n) * n + kl // n)
+    if not np.array_equal(np.sort(one_sided), arrays["hull"]):
+        return False  # the one-sided edges are not exactly the hull cycle
+    used = np.zeros(n, dtype=bool)
+    used[t.ravel()] = True
+    if int(used.sum()) != n_distinct:
+        return False  # a point is not a vertex
+    fwd = back[first] == 0                      # the pair's first side is (lo, hi)
+    ww = np.where(fwd, third[first], third[first + 1])
+    xx = np.where(fwd, third[first + 1], third[first])
+    uu, vv = k[first] // n, k[first] % n
+    X, Y = arrays["x"], arrays["y"]
+    s = bulk.incircle(X[uu], Y[uu], X[vv], Y[vv], X[ww], Y[ww], X[xx], Y[xx])
+    for j in np.flatnonzero(s == 0).tolist():
+        s[j] = incircle_exact(P[uu[j]], P[vv[j]], P[ww[j]], P[xx[j]])
     return not (s > 0).any()
 
 

@@ -8,8 +8,10 @@ private mount namespace of its own, where
   world-traversable tmpfs laid over the blocking directory, read-only as before: nothing on the
   host changes mode or owner;
 * the checkout's numba caches (``__pycache__`` with ``.nbi`` files) are replaced by writable
-  copies owned by the user, so numba loads what ``make warm`` compiled instead of compiling
-  everything again (about 60 s of 2 CPUs);
+  copies owned by the user, and the same files are copied into the user's ``NUMBA_CACHE_DIR``
+  (where numba looks first when it is set: :func:`seed_numba_cache_dir`), so numba loads what
+  ``make warm`` compiled instead of compiling everything again (about 60 s of 2 CPUs; numba
+  itself checks each file's source stamp and its own version, and compiles what does not match);
 * the grader's test cache (``GRADER_CACHE``) is a copy the user owns: the "instructor's"
   ``.cache/grader``.
 
@@ -74,6 +76,28 @@ def _numba_caches() -> list[Path]:
     return sorted({p.parent for p in (REPO / "reference_impl").rglob("*.nbi")})
 
 
+def seed_numba_cache_dir(cache_dir: Path) -> int:
+    """Copy the checkout's compiled numba code (``.nbi``/``.nbc`` and the ``.deps.sha1`` stamps of
+    :mod:`reference_impl._jitcache`) into ``cache_dir`` laid out as numba's own locator for
+    ``NUMBA_CACHE_DIR`` expects it (``<folder>_<sha1 of the folder's path>``); return the files copied.
+
+    With ``NUMBA_CACHE_DIR`` set numba never reads ``__pycache__``: without this the account compiled
+    every kernel again. A copy, not a link: the account owns and may rewrite it; numba recompiles any
+    function whose source stamp or numba version differs, so a copy never runs stale code.
+    """
+    from numba.core.caching import UserProvidedCacheLocator
+    copied = 0
+    for cache in _numba_caches():
+        src_dir = cache.parent  # the sources whose kernels __pycache__ holds
+        dest = cache_dir / UserProvidedCacheLocator.get_suitable_cache_subpath(str(src_dir / "x.py"))
+        for f in cache.iterdir():
+            if f.suffix in (".nbi", ".nbc") or f.name.endswith(".deps.sha1"):
+                dest.mkdir(parents=True, exist_ok=True)
+                shutil.copy2(f, dest / f.name)
+                copied += 1
+    return copied
+
+
 def run_as_user(argv: Sequence[str], env: dict[str, str] | None = None, timeout: float = 1800,
                 user: str = USER) -> subprocess.CompletedProcess:
     """Run ``argv`` as ``user`` (see the module docstring) with cwd = the checkout; output captured.
@@ -128,6 +152,7 @@ def _run_as_user(argv: Sequence[str], env: dict[str, str] | None, timeout: float
         copy = scratch / "numba" / str(k)
         shutil.copytree(cache, copy)
         copies.append((copy, cache))
+    seed_numba_cache_dir(scratch / "numba-user")
     grader_cache = scratch / "grader-cache"
     if (REPO / ".cache" / "grader").is_dir():
         shutil.copytree(REPO / ".cache" / "grader", grader_cache)

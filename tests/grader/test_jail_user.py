@@ -74,6 +74,14 @@ def test_the_account_gets_the_bubblewrap_jail(tiny_judge):
 
 
 @user_only
+def test_the_account_loads_the_checkouts_numba_cache():
+    """The account's numba cache holds every kernel ``make warm`` compiled (ordinary_user copies
+    it where numba looks, ``NUMBA_CACHE_DIR``): nothing here compiles a kernel again."""
+    from reference_impl import warmup
+    assert os.environ.get("NUMBA_CACHE_DIR") and warmup.not_cached() == []
+
+
+@user_only
 @pytest.mark.parametrize("name", NATIVE_ATTACKS)
 def test_without_a_jail_the_attacks_succeed(name, tiny_judge, tmp_path, monkeypatch):
     """The trusted mode (no jail) on a copy of the account's files: each attack does what it says

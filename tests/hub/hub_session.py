@@ -100,6 +100,88 @@ class Hub:
         return "\n".join([t for t in text if having in t][-lines:])
 
 
+def _own(tree: Path, pw: pwd.struct_passwd) -> None:
+    """``tree`` and everything in it owned by ``pw``'s account and private to it (0700 / 0600)."""
+    for p in [tree, *tree.rglob("*")]:
+        os.lchown(p, pw.pw_uid, pw.pw_gid)
+        os.chmod(p, 0o700 if p.is_dir() else 0o600)
+
+
+def _account(name: str) -> pwd.struct_passwd:
+    """The account ``name``, made as deploy.sh makes it when missing (it keeps an existing one)."""
+    try:
+        return pwd.getpwnam(name)
+    except KeyError:
+        subprocess.run(["useradd", "--create-home", "--shell", "/bin/bash", name], check=True)
+        return pwd.getpwnam(name)
+
+
+def seed_grader_cache(account: str) -> Path | None:
+    """Copy the checkout's generated tests (``.cache/grader``, filled by ``make warm``) into
+    ``~account/.cache/grader``, owned by the account and private to it; return it, or None when the
+    checkout has none.
+
+    Test set-up only, to save CI time: deploy.sh's ``grader warm`` as the instructor then checks
+    these tests instead of generating every problem's again through the shared venv (which compiled
+    every numba kernel the generators use, minutes of CPU). The grader's own rules decide: a tests
+    folder is used only when its manifest names this problem's digest (a hash of the package and of
+    the code its tests come from) and this answer key (a hash of the venv's ``reference_impl``
+    sources), so the venv uses them only where it would generate the same tests; any other problem
+    is generated as before.
+    """
+    src = REPO / ".cache" / "grader"
+    if not src.is_dir():
+        return None
+    pw = _account(account)
+    cache = Path(pw.pw_dir) / ".cache"
+    cache.mkdir(mode=0o700, exist_ok=True)
+    os.chown(cache, pw.pw_uid, pw.pw_gid)
+    dest = cache / "grader"
+    shutil.rmtree(dest, ignore_errors=True)
+    shutil.copytree(src, dest, symlinks=False)
+    _own(dest, pw)
+    return dest
+
+
+def prime_numba_cache(account: str, venv: str) -> None:
+    """Compile, as ``account`` into its ``~/.cache/numba`` (the folder its server gives numba), the
+    kernels every checker uses (``reference_impl.warmup``'s "2d predicates" and "checkers"): the
+    cache :func:`seed_numba_cache` then gives the students. Kernels not compiled here are compiled
+    by each account when first used, as on any deployment."""
+    home = pwd.getpwnam(account).pw_dir
+    code = ("from reference_impl import warmup\n"
+            "for name in ('2d predicates', 'checkers'):\n    warmup.FEATURES[name]()\n")
+    subprocess.run(["runuser", "-u", account, "--", "env", f"HOME={home}", f"NUMBA_CACHE_DIR={home}/.cache/numba",
+                    "OMP_NUM_THREADS=1", f"{venv}/bin/python", "-c", code], cwd="/", check=True, timeout=900)
+
+
+def seed_numba_cache(account: str, dest: Path | None = None) -> Path | None:
+    """Copy the instructor's numba cache (``~/.cache/numba`` of the shared venv's kernels, filled by
+    :func:`prime_numba_cache` and by whatever deploy.sh's ``grader warm`` generated) to ``dest`` (default ``~account/.cache/numba``, the folder the account's
+    server gives numba), owned by ``account`` and private to it (0700); return ``dest``, or None
+    when the instructor has none.
+
+    Test set-up only, to save CI time: without it each account compiled every kernel of the shared
+    venv again on its first check (numba's cache is per account). The source is trusted (written by
+    the instructor's account during the install, mode 0700 in a 0700 home) and the copy is the
+    account's own; numba checks each cached function's source stamp and its own version before
+    using it, so a copy never runs code compiled from other sources.
+    """
+    src = Path(pwd.getpwnam(INSTRUCTOR).pw_dir) / ".cache" / "numba"
+    if not src.is_dir():
+        return None
+    pw = pwd.getpwnam(account)
+    if dest is None:
+        cache = Path(pw.pw_dir) / ".cache"
+        cache.mkdir(mode=0o700, exist_ok=True)
+        os.chown(cache, pw.pw_uid, pw.pw_gid)
+        dest = cache / "numba"
+    shutil.rmtree(dest, ignore_errors=True)
+    shutil.copytree(src, dest, symlinks=False)
+    _own(dest, pw)
+    return dest
+
+
 def start_hub(timeout: float = 240) -> Hub:
     """Install the deployment into a fresh COURSE_HOME and start the hub; return when it answers."""
     home = Path(tempfile.mkdtemp(prefix="course-hub-"))
@@ -114,7 +196,9 @@ def start_hub(timeout: float = 240) -> Hub:
         # a fresh class: nothing fetched, submitted or cached by an earlier run (nbgrader lists an
         # assignment as "submitted" from the student's own nbgrader_cache under ~/.local). Emptied
         # before the install, so the class then finds what the install leaves: the instructor's
-        # test and numba caches that deploy.sh fills, as on a real deployment.
+        # test and numba caches that deploy.sh fills, as on a real deployment (for CI time the
+        # instructor's tests are seeded from the checkout's first, and the students' numba caches
+        # from the instructor's after: seed_grader_cache, prime_numba_cache, seed_numba_cache).
         try:
             h = Path(pwd.getpwnam(u).pw_dir)
         except KeyError:  # the install makes the account
@@ -125,7 +209,11 @@ def start_hub(timeout: float = 240) -> Hub:
                     shutil.rmtree(entry, ignore_errors=True)
                 else:
                     entry.unlink(missing_ok=True)
+    seed_grader_cache(INSTRUCTOR)
     subprocess.run([str(DEPLOY), "install"], env=env, check=True, timeout=900)
+    prime_numba_cache(INSTRUCTOR, env["HUB_VENV"])
+    for u in STUDENTS:
+        seed_numba_cache(u)
     log = home / "hub.log"
     with open(log, "w") as f:
         proc = subprocess.Popen([str(DEPLOY), "start"], env=env, stdout=f, stderr=subprocess.STDOUT,

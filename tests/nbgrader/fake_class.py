@@ -79,8 +79,9 @@ class Student:
     edit_test_cells: bool = False  # rewrite the locked test cells (source and points)
 
 
-def _solution(name: str) -> str:
-    text = (SOLUTIONS / "bowyer-watson-timed" / name).read_text()
+def _solution(name: str, problem_id: str = "bowyer-watson-timed") -> str:
+    """The code of ``solutions/<problem_id>/<name>`` without its ``__main__`` block."""
+    text = (SOLUTIONS / problem_id / name).read_text()
     return text.split('\nif __name__ == "__main__":')[0] + "\n"
 
 
@@ -172,12 +173,15 @@ def submit_class(course: Course, problem_id: str, klass: list[Student], deadline
 
 def collected_class(tmp: Path, problem_id: str, klass: list[Student], started_min_ago: float = 25) -> Course:
     """A course in ``tmp`` with ``klass`` on the roster, the exam started ``started_min_ago`` minutes ago
-    (its due date set from that start), every submission in the exchange and collected."""
+    (its due date set from that start; a problem that is not timed has no due date, and its
+    submissions are dated a few minutes ago), every submission in the exchange and collected."""
     from grader.course.nbgrader_autograde import set_exam_deadline
+    from grader.problems import load_problem
 
     course = make_course(tmp, problem_id)
     add_roster(course.root, [s.name for s in klass])
-    due = set_exam_deadline(course.root, problem_id, datetime.now(timezone.utc) - timedelta(minutes=started_min_ago))
+    start = datetime.now(timezone.utc) - timedelta(minutes=started_min_ago)
+    due = set_exam_deadline(course.root, problem_id, start) if load_problem(problem_id).timed else start
     submit_class(course, problem_id, klass, due)
     course.nbgrader("collect", problem_id)
     return course

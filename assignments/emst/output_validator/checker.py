@@ -4,7 +4,9 @@ Exact: the answer must be a spanning tree of all n indices (n - 1 edges, no cycl
 list of squared edge lengths, computed exactly from the input doubles (Python integers after one
 common power-of-two scaling, ``reference_impl/exact/verify.py``), must equal the reference tree's. Every
 minimum spanning tree has the same sorted lengths, and a spanning tree with those lengths has the
-minimum total, so this accepts exactly the optimal trees, whatever the ties. The grader loads this
+minimum total, so this accepts exactly the optimal trees, whatever the ties. The reference's own
+edges (each once, in any order) are accepted at once (``reference_impl/exact/edgesets.py``), and
+another spanning tree compares only the edges it does not share with the reference's. The grader loads this
 file with the shared loader (``grader/checker_runtime.py``); ``export-kattis`` makes it a
 self-contained Kattis output validator.
 
@@ -16,7 +18,7 @@ from __future__ import annotations
 
 import math
 
-LIBRARY = ("judge_io", "verify")  # bound as globals by the shared loader
+LIBRARY = ("judge_io", "verify", "edgesets")  # bound as globals by the shared loader
 
 PresentationError = judge_io.PresentationError  # noqa: F821 - bound by the loader
 show, mistake = judge_io.show, judge_io.mistake  # noqa: F821 - safe previews, two-part messages
@@ -107,6 +109,30 @@ def _swap_hint(P, edges, expected, length) -> str:
     return ""
 
 
+def _exact(points: list, expected) -> list:
+    """``verify.exact_coordinates(points)``, kept for the next student's check of the same test."""
+    return edgesets.remembered(points, expected, "exact", lambda: verify.exact_coordinates(points))  # noqa: F821
+
+
+def _lengths_agree_off_common(points: list, edges: list, expected: list) -> bool:
+    """True only when the sorted exact squared lengths of ``edges`` equal ``expected``'s (False: ask
+    the full comparison, which writes the message). Both are lists of distinct edges, so the edges
+    they share cancel: it compares only the edges in one and not the other."""
+    got, want = edgesets.edge_keys(edges), edgesets.edge_keys(expected)  # noqa: F821
+    if len(got) != len(edges) or len(want) != len(expected):
+        return False  # a repeated edge: the full comparison decides
+    mine, theirs = got - want, want - got
+    if len(mine) != len(theirs):
+        return False
+    P = _exact(points, expected)
+
+    def length(e) -> int:
+        (ax, ay), (bx, by) = P[e[0]], P[e[1]]
+        return (ax - bx) ** 2 + (ay - by) ** 2
+
+    return sorted(map(length, mine)) == sorted(map(length, theirs))
+
+
 #: failure message (a substring) -> the kind of mistake a hidden test's feedback shows (no numbers)
 MISTAKES = {
     "edges, you gave": "the number of edges is not n minus one",
@@ -121,12 +147,17 @@ MISTAKES = {
 def check(args: list, edges: list[list[int]], expected: list[list[int]] | None) -> tuple[bool, str]:
     """Exact check; ``expected`` is a minimum spanning tree (the reference answer)."""
     (points,) = args
+    if expected is not None and edgesets.same_edge_set(  # noqa: F821 - the reference's tree, each edge once
+            points, edges, expected, lambda: not _tree_errors(points, expected)):
+        return True, "ok"
     problem = _tree_errors(points, edges)
     if problem:
         return False, problem
     if expected is None:
         return True, "ok (a spanning tree; not compared with an optimum)"
-    P = verify.exact_coordinates(points)  # noqa: F821
+    if _lengths_agree_off_common(points, edges, expected):
+        return True, "ok"
+    P = _exact(points, expected)
 
     def length(i: int, j: int) -> int:
         return (P[i][0] - P[j][0]) ** 2 + (P[i][1] - P[j][1]) ** 2

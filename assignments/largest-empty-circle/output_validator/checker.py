@@ -109,6 +109,27 @@ def convex_hull(points: list) -> list[int]:
     return lower[:-1] + upper[:-1]
 
 
+#: id(points) -> (points, a copy of its rows, its convex_hull): a judge checks every student's circle
+#: against the same point list, whose exact hull is the check's dearest part; bounded by _HULLS_MAX points
+_HULLS: dict = {}
+_HULLS_MAX = 2_000_000
+
+
+def _hull_of(points) -> list[int]:
+    """:func:`convex_hull` of ``points``, kept for the same list checked again (the same object,
+    still equal to the copy taken then)."""
+    if type(points) is not list:
+        return convex_hull(points)
+    hit = _HULLS.get(id(points))
+    if hit is not None and hit[0] is points and hit[1] == points:
+        return hit[2]
+    hull = convex_hull(points)
+    if sum(len(h[1]) for h in _HULLS.values()) + len(points) > _HULLS_MAX:
+        _HULLS.clear()
+    _HULLS[id(points)] = (points, [list(p) for p in points], hull)
+    return hull
+
+
 #: failure message (a substring) -> the kind of mistake a hidden test's feedback shows (no numbers)
 MISTAKES = {
     "strictly inside the circle": "a point lies strictly inside the circle",
@@ -142,7 +163,7 @@ def check(args: list, circle: list[float], expected: list[float]) -> tuple[bool,
         if d < R - eps:
             return False, (f"point {i} ({px!r}, {py!r}) is strictly inside the circle: its distance to the "
                            f"centre is {d * 2.0 ** k!r} < r = {r!r}")
-    hull = convex_hull(points)
+    hull = _hull_of(points)
     for a, b in zip(hull, hull[1:] + hull[:1]):
         ax, ay, bx, by = s(points[a][0]), s(points[a][1]), s(points[b][0]), s(points[b][1])
         length = math.hypot(bx - ax, by - ay)

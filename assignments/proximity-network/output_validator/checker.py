@@ -5,7 +5,8 @@ with diameter ij, that is (r - i) . (r - j) > 0 for every other point r. The gra
 the received edge set (either endpoint order, any edge order) must equal the reference's, with
 repeated points named by their smallest index. A wrong answer's message names a missing edge, or an
 extra edge together with a point inside (or on) its disc, found with exact integer arithmetic
-(``reference_impl/exact/verify.py`` scaling). The grader loads this file with the shared loader
+(``reference_impl/exact/verify.py`` scaling). The reference's edges, each once in any order, are
+accepted at once (``reference_impl/exact/edgesets.py``); anything else gets the full check. The grader loads this file with the shared loader
 (``grader/checker_runtime.py``); ``export-kattis`` makes it a self-contained Kattis output validator.
 
 Example:
@@ -14,7 +15,7 @@ Example:
 """
 from __future__ import annotations
 
-LIBRARY = ("judge_io", "verify")  # bound as globals by the shared loader
+LIBRARY = ("judge_io", "verify", "edgesets")  # bound as globals by the shared loader
 
 PresentationError = judge_io.PresentationError  # noqa: F821 - bound by the loader
 show, mistake = judge_io.show, judge_io.mistake  # noqa: F821 - safe previews, two-part messages
@@ -47,6 +48,31 @@ def write_output(edges: list) -> str:
     return judge_io.write_index_rows(edges)  # noqa: F821
 
 
+def _edge_errors(points: list, edges: list) -> tuple[str, set, list, dict]:
+    """The first problem of the edge list on its own ("" if none), its edges as ``(min, max)``
+    pairs, the exact points and each position's smallest index."""
+    n = len(points)
+    P = verify.exact_coordinates(points)  # noqa: F821
+    first: dict = {}
+    for k, p in enumerate(P):
+        first.setdefault(p, k)
+    seen: set = set()
+    for k, (i, j) in enumerate(edges):
+        for v in (i, j):
+            if not 0 <= v < n:
+                return f"edge {k} = [{i}, {j}] uses index {v}, outside 0..{n - 1}", seen, P, first
+            if first[P[v]] != v:
+                return (f"edge {k} = [{i}, {j}]: point {v} repeats point {first[P[v]]}; "
+                        f"name repeated points by their smallest index ({first[P[v]]})"), seen, P, first
+        if i == j:
+            return f"edge {k} = [{i}, {j}] joins a point to itself", seen, P, first
+        e = (min(i, j), max(i, j))
+        if e in seen:
+            return f"edge {k} = [{i}, {j}] is listed twice", seen, P, first
+        seen.add(e)
+    return "", seen, P, first
+
+
 def _witness(P: list, i: int, j: int, first: dict) -> int | None:
     """A point (smallest index of its position) in the closed disc with diameter ij, or None."""
     (xi, yi), (xj, yj) = P[i], P[j]
@@ -71,25 +97,12 @@ MISTAKES = {
 def check(args: list, edges: list[list[int]], expected: list[list[int]] | None) -> tuple[bool, str]:
     """Exact check; ``expected`` is the Gabriel graph (the reference answer)."""
     (points,) = args
-    n = len(points)
-    P = verify.exact_coordinates(points)  # noqa: F821
-    first: dict = {}
-    for k, p in enumerate(P):
-        first.setdefault(p, k)
-    seen = set()
-    for k, (i, j) in enumerate(edges):
-        for v in (i, j):
-            if not 0 <= v < n:
-                return False, f"edge {k} = [{i}, {j}] uses index {v}, outside 0..{n - 1}"
-            if first[P[v]] != v:
-                return False, (f"edge {k} = [{i}, {j}]: point {v} repeats point {first[P[v]]}; "
-                               f"name repeated points by their smallest index ({first[P[v]]})")
-        if i == j:
-            return False, f"edge {k} = [{i}, {j}] joins a point to itself"
-        e = (min(i, j), max(i, j))
-        if e in seen:
-            return False, f"edge {k} = [{i}, {j}] is listed twice"
-        seen.add(e)
+    if expected is not None and edgesets.same_edge_set(  # noqa: F821 - the reference's edges, each once
+            points, edges, expected, lambda: not _edge_errors(points, expected)[0]):
+        return True, "ok"
+    problem, seen, P, first = _edge_errors(points, edges)
+    if problem:
+        return False, problem
     if expected is None:
         return True, "ok (not compared with the Gabriel graph)"
     want = {(min(i, j), max(i, j)) for i, j in expected}
