@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The course on JupyterHub: install (as root) and optionally start the hub. Run from the checkout:
-#   sudo deploy/jupyterhub/deploy.sh install            # venv, proxy, accounts, exchange, configs, test cache
+#   sudo deploy/jupyterhub/deploy.sh install            # venv, proxy, accounts, exchange, configs, numba seed, test cache
 #   sudo deploy/jupyterhub/deploy.sh start              # the hub in the foreground (Ctrl-C stops it)
 #   sudo deploy/jupyterhub/deploy.sh down               # stop a hub started by start (pid file)
 #   sudo deploy/jupyterhub/deploy.sh exchange           # only nbgrader's exchange (part of install)
@@ -148,6 +148,8 @@ warm_tests() {  # the instructor's test cache filled now, as that account (its o
     # its server sets GRADER_CACHE): the first grading or sample check never waits for the tests
     local instr="${HUB_INSTRUCTORS%%,*}" home
     home="$(getent passwd "$instr" | cut -d: -f6)"
+    # its numba cache starts from the seed, as the hub's pre_spawn would start it (when empty)
+    (cd / && "$HUB_VENV/bin/python" -I -m grader.course.numba_seed seed "$HUB_VENV/numba-seed" "$home/.cache/numba" "$instr")
     (cd / && runuser -u "$instr" -- env HOME="$home" PATH="$HUB_VENV/bin:/usr/bin:/bin" \
         GRADER_PROBLEMS="$COURSE_HOME/course" GRADER_CACHE="$home/.cache/grader" \
         NUMBA_CACHE_DIR="$home/.cache/numba" OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 \
@@ -196,7 +198,7 @@ down() {
 }
 
 case "${1:-}" in
-    install) venv; proxy; accounts; course; warm_tests; numba_seed; echo "installed under $COURSE_HOME (venv $HUB_VENV)";;
+    install) venv; proxy; accounts; course; numba_seed; warm_tests; echo "installed under $COURSE_HOME (venv $HUB_VENV)";;
     start) start;;
     down) down;;
     exchange) exchange; echo "exchange ready: $EXCHANGE";;

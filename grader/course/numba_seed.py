@@ -17,6 +17,7 @@ Run (root; the hub does the copy itself):
     python -m grader.course.numba_seed build SEED_DIR "2d predicates,checkers"   # as the compiling account
     python -m grader.course.numba_seed check SEED_DIR                             # '' or why untrusted
     python -m grader.course.numba_seed copy SEED_DIR DEST                         # as the account
+    python -m grader.course.numba_seed seed SEED_DIR DEST ACCOUNT                 # root: as the hub does
 
 Example:
     >>> untrusted("/nonexistent-seed")
@@ -166,6 +167,11 @@ def main(argv: list[str]) -> int:
         why = untrusted(argv[1])
         print(why)
         return 1 if why else 0
+    if len(argv) == 4 and argv[0] == "seed":
+        import pwd
+        pw = pwd.getpwnam(argv[3])
+        seed_account(argv[1], argv[2], pw.pw_uid, pw.pw_gid)
+        return 0
     if len(argv) == 3 and argv[0] == "copy":
         print(copy_seed(argv[1], argv[2]))
         return 0
