@@ -21,7 +21,10 @@ nbgrader's server and lab extensions on or off for that role.
 import os
 import pwd
 
-from grader.course.numba_seed import seed_account
+try:  # the course venv's grader (a venv installed before the seed existed has none: no seed then)
+    from grader.course.numba_seed import seed_account
+except ImportError:  # pragma: no cover - an old venv
+    seed_account = None
 
 c = get_config()  # noqa: F821 - provided by jupyterhub when it loads this file
 
@@ -78,8 +81,9 @@ def pre_spawn(spawner) -> None:
     env["JUPYTER_CONFIG_PATH"] = os.path.join(COURSE_HOME, "jupyter", role)
     env["NUMBA_CACHE_DIR"] = os.path.join(home, ".cache", "numba")
     # copied as the account, only into a missing or empty cache, only from a root-owned seed
-    seed_account(os.path.join(VENV, "numba-seed"), env["NUMBA_CACHE_DIR"], pw.pw_uid, pw.pw_gid,
-                 log=spawner.log.info, python=os.path.join(VENV_BIN, "python"))
+    if seed_account is not None:
+        seed_account(os.path.join(VENV, "numba-seed"), env["NUMBA_CACHE_DIR"], pw.pw_uid, pw.pw_gid,
+                     log=spawner.log.info, python=os.path.join(VENV_BIN, "python"))
     env["GRADER_CACHE"] = os.path.join(home, ".cache", "grader")
     env["GRADER_PROBLEMS"] = os.path.join(COURSE_HOME, "course" if role == "instructor" else "problems")
     env["OMP_NUM_THREADS"] = env["OPENBLAS_NUM_THREADS"] = "1"
