@@ -179,7 +179,7 @@ def start_hub(timeout: float = 240) -> Hub:
            "HUB_INSTRUCTORS": INSTRUCTOR, "HUB_STUDENTS": ",".join(STUDENTS), "HUB_AUTH": "dummy",
            "HUB_DUMMY_PASSWORD": password, "HUB_PORT": str(port), "HUB_API_PORT": str(_free_port()),
            "HUB_PROXY_API_PORT": str(_free_port()),
-           # the kernels every checker uses (CI time: not every group); kept with build/hub-venv
+           # CI time: a small seed (not every group), kept with build/hub-venv between runs
            "HUB_NUMBA_SEED": "2d predicates,checkers"}
     for u in (INSTRUCTOR, *STUDENTS):
         # a fresh class: nothing fetched, submitted or cached by an earlier run (nbgrader lists an
