@@ -263,6 +263,7 @@ class Sandbox:
         self.mechanism = "none"
         #: what the submission keeps in the jail's tmpfs mounts (sampled by the runner)
         self.files = tmpfs.FileUse(tmpfs.sizes(limits))
+        self._inner = (0, 0)  # (a bubblewrap pid, its child inside the jail): see sample_files
 
     # -- lifecycle -------------------------------------------------------------------------
     def __enter__(self) -> "Sandbox":
@@ -441,9 +442,14 @@ class Sandbox:
         """Measure what the submission keeps in the jail's tmpfs mounts (:attr:`files`), seen from
         a process inside the jail: for bubblewrap a child of ``pid`` (bubblewrap itself stays in
         the host's mounts), else ``pid``."""
-        if self.kind in ("bwrap", "namespaces"):
-            inner = children(pid)[:1] if self.kind == "bwrap" else [pid]
-            self.files.sample(inner[0] if inner else None)
+        if self.kind == "namespaces":
+            self.files.sample(pid)
+        elif self.kind == "bwrap":  # the child found inside the jail is kept while ``pid`` is the same
+            if self._inner[0] == pid and self.files.sample(self._inner[1]):
+                return
+            inner = children(pid)[:1]
+            if inner and self.files.sample(inner[0]):
+                self._inner = (pid, inner[0])
 
     def decode_exit(self, code: int) -> int:
         """The student process's exit code as ``waitstatus_to_exitcode`` gives it (negative:

@@ -112,15 +112,20 @@ def _runqueue_seconds(box: Sandbox, pid: int) -> float:
     """Time spent runnable but waiting for a CPU (``schedstat`` field 2): summed over the
     sandbox's processes when it has a group (the jail's own pid 1 and the student's helpers),
     else of process ``pid``."""
-    pids = box.group.pids() if box.group is not None else [pid]
-    total = 0.0
-    for p in pids or [pid]:
-        try:
-            with open(f"/proc/{p}/schedstat", "rb") as f:
-                total += int(f.read().split()[1]) / 1e9
-        except (OSError, IndexError, ValueError):
-            pass
-    return total
+    if box.group is not None:
+        return box.group.runqueue_seconds(box.group.pids() or [pid])
+    try:
+        with open(f"/proc/{pid}/schedstat", "rb") as f:
+            return int(f.read().split()[1]) / 1e9
+    except (OSError, IndexError, ValueError):
+        return 0.0
+
+
+def _usage(box: Sandbox, pid: int) -> tuple[float, float]:
+    """(:func:`_cpu_seconds`, :func:`_runqueue_seconds`) in one pass over the sandbox's counters."""
+    if box.group is not None:
+        return box.group.usage(pid)
+    return _cpu_seconds(box, pid), _runqueue_seconds(box, pid)
 
 
 def _peak_rss_mb(box: Sandbox, pid: int) -> float:
@@ -395,7 +400,13 @@ def _classify_death(child: _Child, memory_mb: float, limit_mb: int) -> RunOutcom
 
 def _output_overflow(box: Sandbox, paths: Sequence[str]) -> bool:
     limit = box.limits.output_mb << 20
-    return any(os.path.exists(p) and os.path.getsize(p) >= limit for p in paths)
+    for p in paths:
+        try:
+            if os.stat(p).st_size >= limit:
+                return True
+        except OSError:  # not there (yet)
+            pass
+    return False
 
 
 def output_paths(box: Sandbox) -> list[str]:
@@ -487,8 +498,7 @@ class FunctionWorker:
         self._next_id += 1
         rid = self._next_id
         _reset_peak(self.box, child.pid)
-        cpu0 = _cpu_seconds(self.box, child.pid)
-        rq0 = _runqueue_seconds(self.box, child.pid)
+        cpu0, rq0 = _usage(self.box, child.pid)
         wall0 = time.monotonic()
         child.send({"id": rid} if args_json is not None else {"id": rid, "args": args}, args_json)
         wall_limit = wall_limit_for(time_limit)
@@ -501,18 +511,22 @@ class FunctionWorker:
                 break
             if child.exit_status is not None or time.monotonic() >= deadline:
                 break
-            used = _cpu_seconds(self.box, child.pid) - cpu0
+            cpu, rq = _usage(self.box, child.pid)
+            used = cpu - cpu0
             if used > time_limit + 0.05:
                 cpu_exceeded = True
                 break
-            idle = time.monotonic() - wall0 - used - (_runqueue_seconds(self.box, child.pid) - rq0)
+            idle = time.monotonic() - wall0 - used - (rq - rq0)
             if idle > min(idle_left, sleep_limit_for(time_limit)):
                 idle_exceeded = True
                 break
         wall = time.monotonic() - wall0
         alive = child.exit_status is None
-        cpu = _cpu_seconds(self.box, child.pid) - cpu0 if alive or self.box.group else wall
-        waited = _runqueue_seconds(self.box, child.pid) - rq0 if alive else 0.0
+        if alive:
+            cpu, waited = _usage(self.box, child.pid)
+            cpu, waited = cpu - cpu0, waited - rq0
+        else:
+            cpu, waited = _cpu_seconds(self.box, child.pid) - cpu0 if self.box.group else wall, 0.0
         mem = _peak_rss_mb(self.box, child.pid)
         time_s = round(max(cpu, 0.0), 4)
         idle = max(0.0, wall - max(cpu, 0.0) - waited)
