@@ -41,6 +41,13 @@ import traceback
 import types
 
 CONFIG = json.loads(sys.argv[1])
+if CONFIG.get("site_paths") is not None:  # started with -S: the parent named the site-packages directories
+    sys.path.extend(p for p in CONFIG["site_paths"] if p not in sys.path)
+    import site  # with -S importing it adds no path; it gives the builtins that site would (exit, quit, help)
+
+    site.setquit()
+    site.setcopyright()
+    site.sethelper()
 CTL_IN, CTL_OUT = CONFIG["ctl_in"], CONFIG["ctl_out"]
 FORBIDDEN = tuple(CONFIG["forbidden"])
 #: compiled engine module -> engine name ("matplotlib._qhull" -> "Qhull"): forbidden whoever imports it
@@ -59,12 +66,17 @@ class SandboxViolation(BaseException):
     """Raised in student code for a forbidden operation (BaseException: ``except Exception`` misses it)."""
 
 
-def _send(obj):
+def _encode(obj):
+    return json.dumps(obj, allow_nan=True, separators=(",", ":"))
+
+
+def _send(obj, text=None):
+    """Send ``obj`` as one JSON line (``text``: the same, already encoded by :func:`_encode`)."""
     try:  # what the submission printed so far reaches its file before the reply (shown for failing tests)
         sys.stdout.flush()
     except BaseException:  # noqa: BLE001 - a flood (EFBIG) is judged by the parent
         pass
-    data = (json.dumps(obj, allow_nan=True, separators=(",", ":")) + "\n").encode()
+    data = ((_encode(obj) if text is None else text) + "\n").encode()
     view = memoryview(data)
     while view:
         n = os.write(CTL_OUT, view)
@@ -400,16 +412,15 @@ def main():
         except BaseException as exc:  # noqa: BLE001
             _send({"id": rid, "error": _error_info(exc)})
             continue
-        try:
-            payload = _to_json(result)
-            json.dumps(payload, allow_nan=True)
+        try:  # converted and encoded once: what cannot be encoded is a wrong type
+            text = _encode({"id": rid, "ok": _to_json(result)})
         except (TypeError, ValueError) as exc:
             _send({"id": rid, "bad_type": str(exc)})
             continue
         except RecursionError:
             _send({"id": rid, "bad_type": "nested too deeply"})
             continue
-        _send({"id": rid, "ok": payload})
+        _send(None, text)
     os._exit(0)
 
 

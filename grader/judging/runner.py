@@ -27,7 +27,7 @@ from dataclasses import dataclass
 from typing import Any, Sequence
 
 from ..jail import BOOTSTRAP_PATH, Sandbox, python_roots
-from ..jail.paths import interpreter
+from ..jail.paths import interpreter, site_paths
 from ..jail.cgroups import SAMPLE_S, ProcTree
 from ..jail.engines import ENGINE_API, IMPORTED_BY_LIBRARIES, engine_libraries, engine_modules
 from .text import clean
@@ -205,7 +205,10 @@ class _Child:
         c_in_r, self.ctl_in = os.pipe()
         self.ctl_out, c_out_w = os.pipe()
         config = dict(config, ctl_in=c_in_r, ctl_out=c_out_w)
-        argv = [interpreter(), "-I", "-c", BOOTSTRAP_SOURCE, json.dumps(config)]
+        sites = site_paths()  # -S: no .pth code in the child (see site_paths), its packages all the same
+        if sites is not None:
+            config["site_paths"] = list(sites)
+        argv = [interpreter(), "-I" if sites is None else "-IS", "-c", BOOTSTRAP_SOURCE, json.dumps(config)]
         try:
             self.proc = box.spawn(argv, stdin, stdout, stderr, pass_fds=(c_in_r, c_out_w), cpu_s=cpu_s)
         finally:
