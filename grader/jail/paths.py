@@ -40,10 +40,16 @@ def interpreter() -> str:
 
 
 def python_roots() -> list[str]:
-    """Directories the child interpreter needs to read (installation prefixes, realpaths)."""
+    """Directories the child interpreter needs to read (installation prefixes, realpaths; found
+    once a process: the interpreter does not move)."""
+    return list(_python_roots())
+
+
+@functools.lru_cache(maxsize=1)
+def _python_roots() -> tuple[str, ...]:
     roots = {os.path.realpath(p) for p in (sys.prefix, sys.base_prefix, sys.exec_prefix, sys.base_exec_prefix)}
     roots.add(os.path.realpath(os.path.dirname(sys.executable)))
-    return sorted(r for r in roots if os.path.isdir(r))
+    return tuple(sorted(r for r in roots if os.path.isdir(r)))
 
 
 @functools.lru_cache(maxsize=1)

@@ -264,6 +264,7 @@ class Sandbox:
         #: what the submission keeps in the jail's tmpfs mounts (sampled by the runner)
         self.files = tmpfs.FileUse(tmpfs.sizes(limits))
         self._inner = (0, 0)  # (a bubblewrap pid, its child inside the jail): see sample_files
+        self._swept = False  # kill_all left no process of the uid and nothing was spawned since
 
     # -- lifecycle -------------------------------------------------------------------------
     def __enter__(self) -> "Sandbox":
@@ -283,6 +284,7 @@ class Sandbox:
             self.uid = self._slot.uid
             self.kill_all()  # leftovers from a crashed grader
             self.kind = jail_kind(self.uid)
+            self._swept = False  # the first jail_kind probes bubblewrap as the uid
             try:
                 self._check_profile()
             except BaseException:
@@ -333,7 +335,8 @@ class Sandbox:
 
     def close(self) -> None:
         """Kill every process of the slot and delete its files (and its cgroup)."""
-        self.kill_all()
+        if not self._swept:  # else the last sweep left none, and none can have started since
+            self.kill_all()
         if isinstance(self.group, cgroups.ProcTree):
             for pid in self.group.roots:
                 if parent(pid) == os.getpid():  # still our child (not reaped: its pid is not reused)
@@ -495,6 +498,7 @@ class Sandbox:
     def spawn(self, argv: Sequence[str], stdin: int, stdout: int, stderr: int,
               pass_fds: Sequence[int] = (), cpu_s: float | None = None) -> subprocess.Popen:
         """Start ``argv`` jailed; ``cpu_s`` overrides the RLIMIT_CPU of ``self.limits``."""
+        self._swept = False
         cpu = int(cpu_s if cpu_s is not None else self.limits.cpu_s) + 1
         plan, uid, lim = self._plan, self.uid, self.limits
         # an account's jail sets RLIMIT_NPROC inside its user namespace (inner_nproc); trusted: as before
@@ -580,6 +584,7 @@ class Sandbox:
             # dead and hold no resources; our own zombie children are reaped by our wait4
             left = [p for p in uid_processes(self.uid) if alive(p) or parent(p) == me]
             if not left or time.monotonic() > deadline:
+                self._swept = not left
                 return
             time.sleep(0.01)
 
