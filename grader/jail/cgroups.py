@@ -172,7 +172,9 @@ class Group:
             try:
                 total += int(_schedstat_fields(self._sched, pid)[1]) / 1e9
             except (OSError, IndexError, ValueError):
-                self._sched.pop(pid, None)
+                gone = self._sched.pop(pid, None)
+                if gone is not None:
+                    gone.close()
         if len(self._sched) > len(pids):  # forget the processes that left
             for pid in set(self._sched) - set(pids):
                 self._sched.pop(pid).close()

@@ -447,12 +447,9 @@ class Sandbox:
         the host's mounts), else ``pid``."""
         if self.kind == "namespaces":
             self.files.sample(pid)
-        elif self.kind == "bwrap":  # the child found inside the jail is kept while ``pid`` is the same
-            if self._inner[0] == pid and self.files.sample(self._inner[1]):
-                return
-            inner = children(pid)[:1]
-            if inner and self.files.sample(inner[0]):
-                self._inner = (pid, inner[0])
+        elif self.kind == "bwrap" and not (self._inner[0] == pid and self.files.sample(self._inner[1])):
+            inner = children(pid)[:1]  # found once while ``pid`` is the same (kept when inside the jail)
+            self._inner = (pid, inner[0]) if inner and self.files.sample(inner[0]) else (0, 0)
 
     def decode_exit(self, code: int) -> int:
         """The student process's exit code as ``waitstatus_to_exitcode`` gives it (negative:
