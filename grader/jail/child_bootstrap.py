@@ -1,4 +1,8 @@
-"""Child side of the judge: runs INSIDE the sandbox, started as ``python -I child_bootstrap.py CONFIG``.
+"""Child side of the judge: runs INSIDE the sandbox, as ``python -IS -c LOADER CONFIG``.
+
+The grader compiles this file once and sends the code object (``marshal``) first on the control
+pipe; ``LOADER`` (:data:`grader.judging.runner.LOADER`) only reads and runs it. Run by hand,
+``python -I child_bootstrap.py CONFIG`` does the same work.
 
 Standard library only, and never imported by the grader itself. Its start-up imports only what
 the interpreter has loaded already and the C half of ``json`` (``_json``): the ``json`` package,
@@ -21,6 +25,7 @@ interpreter's start; they are imported when an error or a violation needs them. 
    become lists and numbers); anything else is reported as a wrong type, never passed on.
 
 Protocol (one JSON object per line), parent -> child on fd ``ctl_in``:
+    (before it, for the loader: this program's length in 12 digits, then its marshalled code)
     {"source": str, "filename": str}             first line
     {"id": int, "args": [...]}                   function mode, one per test
 child -> parent on fd ``ctl_out``:
@@ -31,8 +36,8 @@ child -> parent on fd ``ctl_out``:
                                                  then waits (2 s at most) until the parent, having
                                                  measured the jail's tmpfs, closes ``ctl_in``
 
-Example (what the parent runs):
-    python -I grader/child_bootstrap.py '{"mode": "function", "entry": "delaunay", ...}'
+Example (what the parent runs, LOADER reading this program from fd 5 first):
+    python -IS -c LOADER '{"mode": "function", "entry": "delaunay", "ctl_in": 5, ...}'
 """
 
 import _json

@@ -19,6 +19,7 @@ Example:
 from __future__ import annotations
 
 import json
+import marshal
 import os
 import select
 import signal
@@ -32,8 +33,32 @@ from ..jail.cgroups import SAMPLE_S, ProcTree
 from ..jail.engines import ENGINE_API, IMPORTED_BY_LIBRARIES, engine_libraries, engine_modules
 from .text import clean
 
-#: The child's program, passed with ``-c`` (the grader's directory is not visible in the jail).
+#: The child's program (the grader's directory is not visible in the jail). It is compiled once
+#: here and sent first on the child's control pipe as ``marshal`` data behind its length in 12
+#: digits (the grader's data to the child, never the other way; the same interpreter on both
+#: sides); the child's ``-c`` program is only :data:`LOADER`. Compiled in every child, the source
+#: cost 4 ms of CPU a start.
 BOOTSTRAP_SOURCE = BOOTSTRAP_PATH.read_text()
+LOADER = """import marshal, os
+def _take(n, fd={fd}):
+    data = b""
+    while len(data) < n:
+        chunk = os.read(fd, n - len(data))
+        if not chunk:
+            os._exit(1)
+        data += chunk
+    return data
+exec(marshal.loads(_take(int(_take(12)))))
+"""
+_bootstrap: list[bytes] = []
+
+
+def bootstrap_code() -> bytes:
+    """What the child's loader reads first: the length in 12 digits, then the compiled bootstrap."""
+    if not _bootstrap:
+        code = marshal.dumps(compile(BOOTSTRAP_SOURCE, "<string>", "exec", dont_inherit=True, optimize=0))
+        _bootstrap.append(b"%012d" % len(code) + code)
+    return _bootstrap[0]
 CLK_TCK = os.sysconf("SC_CLK_TCK")
 
 
@@ -208,7 +233,7 @@ class _Child:
         sites = site_paths()  # -S: no .pth code in the child (see site_paths), its packages all the same
         if sites is not None:
             config["site_paths"] = list(sites)
-        argv = [interpreter(), "-I" if sites is None else "-IS", "-c", BOOTSTRAP_SOURCE, json.dumps(config)]
+        argv = [interpreter(), "-I" if sites is None else "-IS", "-c", LOADER.format(fd=c_in_r), json.dumps(config)]
         try:
             self.proc = box.spawn(argv, stdin, stdout, stderr, pass_fds=(c_in_r, c_out_w), cpu_s=cpu_s)
         finally:
@@ -226,7 +251,7 @@ class _Child:
         self.replies: list[dict] = []
         self.exit_status: int | None = None
         self.rusage = None
-        self.pending = (json.dumps({"source": source, "filename": config["filename"]}) + "\n").encode()
+        self.pending = bootstrap_code() + (json.dumps({"source": source, "filename": config["filename"]}) + "\n").encode()
         self.violation: str | None = None
 
     def send(self, obj: dict, args_json: str | None = None) -> None:
