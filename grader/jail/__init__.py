@@ -34,7 +34,7 @@ from .sandbox import (JAIL_ENV, JAIL_WORKDIR, LOCK_DIR, TRUSTED_ENV, UID_BASE, J
                       bwrap_path, is_root, jail_kind, mechanism, python_roots, refusal_message, refuses_processes,
                       require_jail, uid_processes)
 
-#: The child's program (run with ``python -I -c``; the grader's directory is not visible in the jail).
+#: The child's program (run with ``python -IS -c``; the grader's directory is not visible in the jail).
 BOOTSTRAP_PATH = Path(__file__).with_name("child_bootstrap.py")
 
 __all__ = ["BOOTSTRAP_PATH", "JAIL_ENV", "JAIL_WORKDIR", "LOCK_DIR", "TRUSTED_ENV", "UID_BASE", "JailUnavailable",

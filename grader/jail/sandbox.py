@@ -263,6 +263,8 @@ class Sandbox:
         self.mechanism = "none"
         #: what the submission keeps in the jail's tmpfs mounts (sampled by the runner)
         self.files = tmpfs.FileUse(tmpfs.sizes(limits))
+        self._inner = (0, 0)  # (a bubblewrap pid, its child inside the jail): see sample_files
+        self._swept = False  # kill_all left no process of the uid and nothing was spawned since
 
     # -- lifecycle -------------------------------------------------------------------------
     def __enter__(self) -> "Sandbox":
@@ -282,6 +284,7 @@ class Sandbox:
             self.uid = self._slot.uid
             self.kill_all()  # leftovers from a crashed grader
             self.kind = jail_kind(self.uid)
+            self._swept = False  # the first jail_kind probes bubblewrap as the uid
             try:
                 self._check_profile()
             except BaseException:
@@ -332,7 +335,8 @@ class Sandbox:
 
     def close(self) -> None:
         """Kill every process of the slot and delete its files (and its cgroup)."""
-        self.kill_all()
+        if not self._swept:  # else the last sweep left none, and none can have started since
+            self.kill_all()
         if isinstance(self.group, cgroups.ProcTree):
             for pid in self.group.roots:
                 if parent(pid) == os.getpid():  # still our child (not reaped: its pid is not reused)
@@ -441,9 +445,11 @@ class Sandbox:
         """Measure what the submission keeps in the jail's tmpfs mounts (:attr:`files`), seen from
         a process inside the jail: for bubblewrap a child of ``pid`` (bubblewrap itself stays in
         the host's mounts), else ``pid``."""
-        if self.kind in ("bwrap", "namespaces"):
-            inner = children(pid)[:1] if self.kind == "bwrap" else [pid]
-            self.files.sample(inner[0] if inner else None)
+        if self.kind == "namespaces":
+            self.files.sample(pid)
+        elif self.kind == "bwrap" and not (self._inner[0] == pid and self.files.sample(self._inner[1])):
+            inner = children(pid)[:1]  # found once while ``pid`` is the same (kept when inside the jail)
+            self._inner = (pid, inner[0]) if inner and self.files.sample(inner[0]) else (0, 0)
 
     def decode_exit(self, code: int) -> int:
         """The student process's exit code as ``waitstatus_to_exitcode`` gives it (negative:
@@ -489,6 +495,7 @@ class Sandbox:
     def spawn(self, argv: Sequence[str], stdin: int, stdout: int, stderr: int,
               pass_fds: Sequence[int] = (), cpu_s: float | None = None) -> subprocess.Popen:
         """Start ``argv`` jailed; ``cpu_s`` overrides the RLIMIT_CPU of ``self.limits``."""
+        self._swept = False
         cpu = int(cpu_s if cpu_s is not None else self.limits.cpu_s) + 1
         plan, uid, lim = self._plan, self.uid, self.limits
         # an account's jail sets RLIMIT_NPROC inside its user namespace (inner_nproc); trusted: as before
@@ -574,6 +581,7 @@ class Sandbox:
             # dead and hold no resources; our own zombie children are reaped by our wait4
             left = [p for p in uid_processes(self.uid) if alive(p) or parent(p) == me]
             if not left or time.monotonic() > deadline:
+                self._swept = not left
                 return
             time.sleep(0.01)
 
