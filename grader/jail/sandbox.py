@@ -62,7 +62,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Sequence
 
-from . import cgroups, engines, profiles, seccomp, uidpool
+from . import cgroups, engines, launcher, profiles, seccomp, uidpool
 from .errors import JailUnavailable
 from .fontcache import matplotlib_fontlist
 from .mounts import CLONE_NEWNET, CLONE_NEWUSER, JAIL_WORKDIR, MPL_DIR, Plan, jail_filesystem, stage_for_bwrap, unshare
@@ -232,7 +232,8 @@ class Sandbox:
     ``trusted`` (default: ``$GRADER_TRUSTED`` is ``1``) allows running without a kernel jail where
     none can be built, instead of raising :class:`JailUnavailable` (a student's own code only).
     ``profile="compile"``: the compile jail (:mod:`grader.jail.profiles`; host folder :attr:`scratch`);
-    ``program``: a binary shown read-only in the run jail; ``no_processes``: the seccomp filter kills
+    ``program``: a binary shown read-only in the run jail, started there by the trusted C launcher
+    (:attr:`launcher`, :mod:`grader.jail.launcher`; None: by the Python bootstrap); ``no_processes``: the seccomp filter kills
     new processes (default: without a cgroup). Both need bubblewrap (``namespaces`` refuses them).
     """
 
@@ -242,6 +243,8 @@ class Sandbox:
         if profile not in ("run", "compile"):
             raise ValueError(f"unknown sandbox profile {profile!r} (run, compile)")
         self.profile, self.program = profile, program
+        #: host path of the C launcher that starts :attr:`program` (None: the Python bootstrap does)
+        self.launcher: str | None = None
         self.no_processes = (not is_root()) if no_processes is None else no_processes
         if profile == "compile":
             self.no_processes = False
@@ -273,6 +276,9 @@ class Sandbox:
                 require_jail()
         self.private_dir = tempfile.mkdtemp(prefix="grader-private-")
         os.chmod(self.private_dir, 0o700)
+        if self.program and self.profile == "run":
+            found = launcher.ensure()
+            self.launcher = str(found) if found is not None else None
         if self.root_mode:
             try:
                 self._slot = uidpool.acquire()  # UnsafeSharedState, NoFreeSlot: a one-line refusal
@@ -361,6 +367,7 @@ class Sandbox:
             return plan
         if self.kind == "bwrap":
             expose = outermost(python_roots()) + ([self.program] if self.program else []) \
+                + ([self.launcher] if self.launcher else []) \
                 + ([fontlist] if fontlist else [])  # the font list last (see _bwrap_options)
             # root stages what bubblewrap (started as the sandbox uid) could not reach; a user binds directly
             plan = Plan([], expose, self.private_dir if self.root_mode else "", self._cover, self.files.mounts["/tmp"],
@@ -398,6 +405,8 @@ class Sandbox:
         for st, path in zip(staged, plan.expose):
             if path == self.program:
                 a += ["--ro-bind", st, profiles.JAIL_PROGRAM]
+            elif path == self.launcher:
+                a += ["--ro-bind", st, profiles.JAIL_LAUNCHER]
             elif path != fontlist:
                 a += ["--ro-bind", st, path]
         for h in inside:
@@ -464,6 +473,13 @@ class Sandbox:
     def program_path(self) -> str:
         """Where the child finds :attr:`program` (the bound copy in a jail, the file itself when trusted)."""
         return profiles.JAIL_PROGRAM if self.kind == "bwrap" else (self.program or "")
+
+    @property
+    def launcher_path(self) -> str:
+        """Where the child finds :attr:`launcher` ("" when the Python bootstrap starts the program)."""
+        if not self.launcher:
+            return ""
+        return profiles.JAIL_LAUNCHER if self.kind == "bwrap" else self.launcher
 
     def inner_nproc(self) -> int | None:
         """RLIMIT_NPROC for the child to set on itself once inside its own user namespace (not

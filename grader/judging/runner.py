@@ -200,7 +200,11 @@ class _Child:
         c_in_r, self.ctl_in = os.pipe()
         self.ctl_out, c_out_w = os.pipe()
         config = dict(config, ctl_in=c_in_r, ctl_out=c_out_w)
-        argv = [interpreter(), "-I", "-c", BOOTSTRAP_SOURCE, json.dumps(config)]
+        if config["mode"] == "exec" and box.launcher_path:  # a compiled program: the C launcher, no interpreter
+            argv = [box.launcher_path, str(config["nproc"] or 0), str(config.get("stack_bytes") or 0),
+                    str(c_in_r), str(c_out_w), config["program"]]
+        else:
+            argv = [interpreter(), "-I", "-c", BOOTSTRAP_SOURCE, json.dumps(config)]
         try:
             self.proc = box.spawn(argv, stdin, stdout, stderr, pass_fds=(c_in_r, c_out_w), cpu_s=cpu_s)
         finally:
