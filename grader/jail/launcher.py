@@ -193,6 +193,12 @@ def ensure(build_missing: bool = True) -> Path | None:
     return None
 
 
+def host_path() -> str | None:
+    """:func:`ensure` as a string (what a sandbox binds), or None."""
+    found = ensure()
+    return str(found) if found is not None else None
+
+
 def status() -> str:
     """One line for the doctor: what starts compiled programs in the run jail (nothing is built)."""
     if os.environ.get(LAUNCHER_ENV) == "python":
