@@ -15,6 +15,7 @@ One entry point: :class:`Sandbox` (with :class:`Limits`) starts jailed children;
 ``fontcache``             matplotlib's font cache, built outside the jail
 ``paths``, ``procs``      path and process-table helpers
 ``doctor``                ``python -m grader.jail``: what this machine gives to root and to this user
+``launcher``              the C launcher of compiled programs (``launcher.c``), built once into the trusted cache
 ``child_bootstrap.py``    the child side (stdlib only, run by path, never imported)
 ========================  =================================================================
 

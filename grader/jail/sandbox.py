@@ -62,7 +62,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Sequence
 
-from . import cgroups, engines, profiles, seccomp, uidpool
+from . import cgroups, engines, launcher, profiles, seccomp, uidpool
 from .errors import JailUnavailable
 from .fontcache import matplotlib_fontlist
 from .mounts import CLONE_NEWNET, CLONE_NEWUSER, JAIL_WORKDIR, MPL_DIR, Plan, jail_filesystem, stage_for_bwrap, unshare
@@ -232,7 +232,8 @@ class Sandbox:
     ``trusted`` (default: ``$GRADER_TRUSTED`` is ``1``) allows running without a kernel jail where
     none can be built, instead of raising :class:`JailUnavailable` (a student's own code only).
     ``profile="compile"``: the compile jail (:mod:`grader.jail.profiles`; host folder :attr:`scratch`);
-    ``program``: a binary shown read-only in the run jail; ``no_processes``: the seccomp filter kills
+    ``program``: a binary shown read-only in the run jail, started by the C launcher (:attr:`launcher`,
+    :mod:`grader.jail.launcher`) or the Python bootstrap; ``no_processes``: the seccomp filter kills
     new processes (default: without a cgroup). Both need bubblewrap (``namespaces`` refuses them).
     """
 
@@ -242,6 +243,7 @@ class Sandbox:
         if profile not in ("run", "compile"):
             raise ValueError(f"unknown sandbox profile {profile!r} (run, compile)")
         self.profile, self.program = profile, program
+        self.launcher: str | None = None  #: host path of the C launcher of :attr:`program` (None: the bootstrap)
         self.no_processes = (not is_root()) if no_processes is None else no_processes
         if profile == "compile":
             self.no_processes = False
@@ -275,6 +277,7 @@ class Sandbox:
                 require_jail()
         self.private_dir = tempfile.mkdtemp(prefix="grader-private-")
         os.chmod(self.private_dir, 0o700)
+        self.launcher = launcher.host_path() if self.program and self.profile == "run" else None
         if self.root_mode:
             try:
                 self._slot = uidpool.acquire()  # UnsafeSharedState, NoFreeSlot: a one-line refusal
@@ -364,7 +367,7 @@ class Sandbox:
                                                         plan.disk_mb, self._hidden)
             return plan
         if self.kind == "bwrap":
-            expose = outermost(python_roots()) + ([self.program] if self.program else []) \
+            expose = outermost(python_roots()) + [p for p in (self.program, self.launcher) if p] \
                 + ([fontlist] if fontlist else [])  # the font list last (see _bwrap_options)
             # root stages what bubblewrap (started as the sandbox uid) could not reach; a user binds directly
             plan = Plan([], expose, self.private_dir if self.root_mode else "", self._cover, self.files.mounts["/tmp"],
@@ -400,8 +403,8 @@ class Sandbox:
         for h in holds:
             a += ["--size", "4096", "--perms", "0755", "--tmpfs", h]
         for st, path in zip(staged, plan.expose):
-            if path == self.program:
-                a += ["--ro-bind", st, profiles.JAIL_PROGRAM]
+            if path in (self.program, self.launcher):
+                a += ["--ro-bind", st, profiles.JAIL_PROGRAM if path == self.program else profiles.JAIL_LAUNCHER]
             elif path != fontlist:
                 a += ["--ro-bind", st, path]
         for h in inside:
@@ -470,6 +473,11 @@ class Sandbox:
     def program_path(self) -> str:
         """Where the child finds :attr:`program` (the bound copy in a jail, the file itself when trusted)."""
         return profiles.JAIL_PROGRAM if self.kind == "bwrap" else (self.program or "")
+
+    @property
+    def launcher_path(self) -> str:
+        """Where the child finds :attr:`launcher` ("": the Python bootstrap starts the program)."""
+        return (profiles.JAIL_LAUNCHER if self.kind == "bwrap" else self.launcher) if self.launcher else ""
 
     def inner_nproc(self) -> int | None:
         """RLIMIT_NPROC for the child to set on itself once inside its own user namespace (not

@@ -230,10 +230,15 @@ class _Child:
         c_in_r, self.ctl_in = os.pipe()
         self.ctl_out, c_out_w = os.pipe()
         config = dict(config, ctl_in=c_in_r, ctl_out=c_out_w)
-        sites = site_paths()  # -S: no .pth code in the child (see site_paths), its packages all the same
-        if sites is not None:
-            config["site_paths"] = list(sites)
-        argv = [interpreter(), "-I" if sites is None else "-IS", "-c", LOADER.format(fd=c_in_r), json.dumps(config)]
+        self.launched = config["mode"] == "exec" and bool(box.launcher_path)
+        if self.launched:  # a compiled program: the C launcher, no interpreter
+            argv = [box.launcher_path, str(config["nproc"] or 0), str(config.get("stack_bytes") or 0),
+                    str(c_in_r), str(c_out_w), config["program"]]
+        else:
+            sites = site_paths()  # -S: no .pth code in the child (see site_paths), its packages all the same
+            if sites is not None:
+                config["site_paths"] = list(sites)
+            argv = [interpreter(), "-I" if sites is None else "-IS", "-c", LOADER.format(fd=c_in_r), json.dumps(config)]
         try:
             self.proc = box.spawn(argv, stdin, stdout, stderr, pass_fds=(c_in_r, c_out_w), cpu_s=cpu_s)
         finally:
@@ -251,7 +256,7 @@ class _Child:
         self.replies: list[dict] = []
         self.exit_status: int | None = None
         self.rusage = None
-        self.pending = bootstrap_code() + (json.dumps({"source": source, "filename": config["filename"]}) + "\n").encode()
+        self.pending = (b"" if self.launched else bootstrap_code()) + (json.dumps({"source": source, "filename": config["filename"]}) + "\n").encode()
         self.violation: str | None = None
 
     def send(self, obj: dict, args_json: str | None = None) -> None:
