@@ -63,6 +63,7 @@ from pathlib import Path
 from typing import Sequence
 
 from . import cgroups, engines, launcher, profiles, seccomp, uidpool
+from .bwrap_probe import bwrap_path, bwrap_status
 from .errors import JailUnavailable
 from .fontcache import matplotlib_fontlist
 from .mounts import CLONE_NEWNET, CLONE_NEWUSER, JAIL_WORKDIR, MPL_DIR, Plan, jail_filesystem, stage_for_bwrap, unshare
@@ -97,7 +98,6 @@ BWRAP_PROCESSES = 2 + 8
 #: Not root: processes of the sandbox's user namespace besides the student's threads (the
 #: pid-1 reaper), added to the RLIMIT_NPROC set inside it.
 USERNS_EXTRA = 1
-_bwrap_works: dict[tuple[str, int | None], tuple[bool, str]] = {}
 _last_mechanism = ""
 
 
@@ -135,11 +135,6 @@ def _expand_cover(cover: tuple[str, ...]) -> tuple[list[str], list[str]]:
     return modules, outermost(sorted((set(given) - wrappers) | set(engines.cover_paths(modules))))
 
 
-def bwrap_path() -> str | None:
-    """The bubblewrap binary, if installed."""
-    return shutil.which("bwrap", path="/usr/bin:/bin:/usr/local/bin")
-
-
 def jail_kind(uid: int | None = None) -> str:
     """The jail this process can build: ``bwrap`` or ``namespaces`` (root without a working
     bubblewrap) as root; ``bwrap`` or ``none`` (no kernel jail: grading refuses) otherwise.
@@ -158,33 +153,6 @@ def jail_kind(uid: int | None = None) -> str:
             raise RuntimeError(f"{JAIL_ENV}=bwrap but bubblewrap is not installed (apt-get install bubblewrap)")
         return "namespaces"
     return "bwrap" if bwrap_status(UID_BASE if uid is None else uid)[0] else "namespaces"
-
-
-def bwrap_status(uid: int | None) -> tuple[bool, str]:
-    """(works, why not) for bubblewrap started by ``uid`` (root drops to it first; None: this
-    process as it is). Probed once per process and uid."""
-    path = bwrap_path()
-    if path is None:
-        return False, "bubblewrap is not installed"
-    if (path, uid) not in _bwrap_works:
-        _bwrap_works[path, uid] = _probe_bwrap(path, uid)
-    return _bwrap_works[path, uid]
-
-
-def _probe_bwrap(path: str, uid: int | None) -> tuple[bool, str]:
-    """Can bubblewrap create its namespaces here, started by ``uid`` (user namespaces enabled)?"""
-    def drop() -> None:
-        os.setgroups([])
-        os.setresgid(uid, uid, uid)
-        os.setresuid(uid, uid, uid)
-    try:
-        r = subprocess.run([path, "--unshare-all", "--die-with-parent", "--ro-bind", "/", "/", "true"],
-                           preexec_fn=drop if uid is not None else None, timeout=30, stdin=subprocess.DEVNULL,
-                           stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
-    except (OSError, subprocess.SubprocessError) as exc:
-        return False, f"bubblewrap could not be started: {exc}"
-    why = r.stderr.decode(errors="replace").strip().splitlines()[-1:] or [f"exit code {r.returncode}"]
-    return r.returncode == 0, "" if r.returncode == 0 else f"bubblewrap cannot create a user namespace ({why[0]})"
 
 
 def refusal_message(reason: str) -> str:
