@@ -310,9 +310,12 @@ def _cmd_validate(a: argparse.Namespace) -> int:
 
 
 def _cmd_warm(a: argparse.Namespace) -> int:
+    from .jail import launcher
     from .problems.package import warm
 
     warm(a.problems or None, sys.stdout)
+    launcher.ensure()  # the C launcher of compiled programs (none without a C compiler: said here)
+    print(launcher.status(), flush=True)
     return 0
 
 
@@ -439,7 +442,8 @@ def build_parser() -> argparse.ArgumentParser:
     p = sub.add_parser("warm", help="generate every problem's tests into the cache (make warm does it)",
                        description="Generate the hidden tests of every problem (or of PROBLEM...) into the test "
                                    "cache, so that no judging waits for them; a cached copy that is trusted and made "
-                                   "for this package is kept. One line per problem.")
+                                   "for this package is kept. One line per problem; then the C launcher of compiled "
+                                   "programs is built (once per machine and account).")
     p.add_argument("problems", nargs="*", help="problem ids (default: every problem)")
     p.set_defaults(func=_cmd_warm)
     p = sub.add_parser("statements", help="write the limits-and-scoring block of each statement")

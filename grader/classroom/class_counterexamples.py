@@ -38,13 +38,14 @@ def _stored_result(store: ResultStore, problem, student: str, sha: str, file: st
 
 
 def search_one(problem_id: str, student: str, sha: str, file: str, db_path: str, seconds: float | None,
-               report_dir: str | None) -> dict:
-    """Worker side: search for one stored submission and store the search (and rewrite its report)."""
+               report_dir: str | None, builds: str | None = None) -> dict:
+    """Worker side: search for one stored submission and store the search (and rewrite its report).
+    ``builds``: where grading left the submission's binary (a compiled one is not compiled again)."""
     problem = load_problem(problem_id)
     store = ResultStore(db_path)
     try:
         result = _stored_result(store, problem, student, sha, file)
-        cx = attach(result, problem, file, seconds)
+        cx = attach(result, problem, file, seconds, build_store=builds)
         store.add_counterexamples(student, problem_id, sha, result)
         if report_dir:
             from ..contest.report import student_report_path, write_report
@@ -75,10 +76,11 @@ def pending(store: ResultStore, problem, file_of: dict[str, str] | None = None) 
 def run_searches(problem_id: str, todo: list[tuple[str, str, str]], db_path: str | Path, seconds: float | None = None,
                  jobs: int = 1, report_dir: str | Path | None = None,
                  say: Callable[[str], None] = lambda s: None, initializer: Callable | None = None,
-                 initargs: tuple = ()) -> tuple[int, float]:
+                 initargs: tuple = (), builds: str | None = None) -> tuple[int, float]:
     """Search for every (student, sha, file) of ``todo``, ``jobs`` at a time; (searches run, their
     total seconds). ``seconds``: the budget of each (None: the problem's ``course.yaml``; 0: none);
-    ``initializer(*initargs)`` runs in each worker (``grade``: die with the parent)."""
+    ``initializer(*initargs)`` runs in each worker (``grade``: die with the parent); ``builds``: the
+    grader's private folder where grading left the compiled submissions' binaries."""
     problem = load_problem(problem_id)
     budget = problem.counterexample_seconds if seconds is None else seconds
     if budget <= 0 or not todo:
@@ -88,7 +90,7 @@ def run_searches(problem_id: str, todo: list[tuple[str, str, str]], db_path: str
     t0 = time.monotonic()
     with ProcessPoolExecutor(max_workers=max(1, jobs), initializer=initializer, initargs=initargs) as pool:
         futures = {pool.submit(search_one, problem_id, st, sha, file, str(db_path), budget,
-                               str(report_dir) if report_dir else None): st for st, sha, file in todo}
+                               str(report_dir) if report_dir else None, builds): st for st, sha, file in todo}
         for fut in as_completed(futures):
             try:
                 r = fut.result()

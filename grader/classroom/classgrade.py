@@ -26,12 +26,15 @@ Example:
 from __future__ import annotations
 
 import csv
+import atexit
 import ctypes
 import hashlib
 import json
 import os
+import shutil
 import signal
 import sys
+import tempfile
 import threading
 import time
 from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
@@ -188,15 +191,24 @@ def _judge_for(problem: str, hide: tuple[str, ...], per_thread: bool = False) ->
     return _judges[key]
 
 
-def grade_local(problem: str, job: Job, db_path: str, hide: tuple[str, ...], report_dir: str | None) -> dict:
-    """Worker side: judge one student's file, committing each test result to the store."""
+def grade_local(problem: str, job: Job, db_path: str, hide: tuple[str, ...], report_dir: str | None,
+                builds: str | None = None) -> dict:
+    """Worker side: judge one student's file, committing each test result to the store. ``builds``:
+    the grader's private folder where a compiled submission that failed a group with WA, PE or RE
+    leaves its binary for its counterexample search (one compile per submission)."""
     store = ResultStore(db_path)
+    judge = _judge_for(problem, hide)
     try:
-        judge = _judge_for(problem, hide)
         store.begin(job.student, problem, job.path, job.sha, job.submitted_at, job.groups)
         prior = store.prior(job.student, problem, job.sha)
+        judge.keep_build, judge.build_store = builds is not None, builds
         result = judge.judge_path(job.path, on_test=lambda r: store.add_test(job.student, problem, job.sha, r),
                                   prior=prior)
+        if builds is not None:
+            from ..contest.counterexample import failing_groups
+
+            if failing_groups(result):
+                judge.store_build()
         if report_dir:  # before the student is marked done: a kill in between leaves them to resume
             from ..contest.report import student_report_path, write_report
 
@@ -205,6 +217,8 @@ def grade_local(problem: str, job: Job, db_path: str, hide: tuple[str, ...], rep
         return {"student": job.student, "verdict": result.verdict, "score": result.score,
                 "max_score": result.max_score, "resumed": len(prior), "tests": len(result.tests)}
     finally:
+        judge.keep_build, judge.build_store = False, None
+        judge.drop_build()
         store.close()
 
 
@@ -354,13 +368,15 @@ def grade_class(problem: str, root: str | Path, db_path: str | Path, jobs: int =
     store.close()  # pool workers are forked: none may inherit an open SQLite connection
     if report_dir:
         Path(report_dir).mkdir(parents=True, exist_ok=True)
+    builds = _builds_folder(spec, counterexample_seconds, scheduler)
     if scheduler:
         store = ResultStore(db_path)
         summaries += _grade_dask(problem, todo, store, scheduler, bar)
     else:
         with ProcessPoolExecutor(max_workers=max(1, jobs), initializer=_die_with_parent,
                                  initargs=(os.getpid(),)) as pool:
-            futures = {pool.submit(grade_local, problem, j, str(db_path), hide, str(report_dir) if report_dir else None): j
+            futures = {pool.submit(grade_local, problem, j, str(db_path), hide, str(report_dir) if report_dir else None,
+                                   builds): j
                        for j in todo}
             store = ResultStore(db_path)  # opened after the workers were forked: progress reads it
             shas, finished = {j.student: j.sha for j in todo}, set()
@@ -401,7 +417,9 @@ def grade_class(problem: str, root: str | Path, db_path: str | Path, jobs: int =
             _add_empty_rows(csv_path, problem, empty, max_score)
     t_grade = time.monotonic() - t_grade
     store = _searches(spec, store, db_path, todo_all, jobs, report_dir, counterexample_seconds,
-                      progress, len(todo), t_grade)
+                      progress, len(todo), t_grade, builds)
+    if builds is not None:
+        shutil.rmtree(builds, ignore_errors=True)
     if report_dir:
         from ..contest.report import write_index
 
@@ -413,10 +431,23 @@ def grade_class(problem: str, root: str | Path, db_path: str | Path, jobs: int =
     return summaries
 
 
+def _builds_folder(spec, seconds: float | None, scheduler: str | None) -> str | None:
+    """A private folder of the grader (mode 0700, removed after the searches, or at exit) where a
+    compiled submission that fails leaves its binary for its counterexample search; None when no
+    search will run here (no budget, or Dask workers judge elsewhere)."""
+    budget = spec.counterexample_seconds if seconds is None else seconds
+    if budget <= 0 or scheduler:
+        return None
+    folder = tempfile.mkdtemp(prefix="grader-builds-")
+    atexit.register(shutil.rmtree, folder, True)
+    return folder
+
+
 def _searches(spec, store: ResultStore, db_path: str | Path, jobs_all: list[Job], jobs: int,
               report_dir: str | Path | None, seconds: float | None, progress: bool, judged: int,
-              t_grade: float) -> ResultStore:
-    """The counterexample searches, after the scores (see :func:`grade_class`); the store reopened."""
+              t_grade: float, builds: str | None = None) -> ResultStore:
+    """The counterexample searches, after the scores (see :func:`grade_class`); the store reopened.
+    ``builds``: where the judged submissions left their binaries (:func:`grade_local`)."""
     from .class_counterexamples import pending, run_searches
 
     budget = spec.counterexample_seconds if seconds is None else seconds
@@ -429,7 +460,7 @@ def _searches(spec, store: ResultStore, db_path: str | Path, jobs_all: list[Job]
     store.close()  # the search workers are forked: none may inherit an open SQLite connection
     say = (lambda line: print(line, file=sys.stderr)) if progress else (lambda line: None)
     run_searches(spec.id, todo, db_path, budget, jobs, report_dir, say=say, initializer=_die_with_parent,
-                 initargs=(os.getpid(),))
+                 initargs=(os.getpid(),), builds=builds)
     return ResultStore(db_path)
 
 

@@ -2,6 +2,9 @@
 
 An interrupted batch (even ``kill -9``) loses at most the test that was running; a rerun reads
 what is stored and judges only the rest. WAL mode and a busy timeout let parallel workers write.
+Commits are not flushed to the disk one by one (``synchronous=NORMAL``: a committed row survives
+the grader's death, not a power cut; there the last rows are judged again by the rerun): an
+``fsync`` a test cost 0.25 ms of CPU and 8 ms of wall time here, more than a small test itself.
 
 Example:
     >>> s = ResultStore(":memory:")
@@ -52,6 +55,7 @@ class ResultStore:
         self.db = sqlite3.connect(self.path, timeout=60, isolation_level=None)
         if self.path != ":memory:":
             self.db.execute("PRAGMA journal_mode=WAL")
+            self.db.execute("PRAGMA synchronous=NORMAL")  # WAL: safe from kill -9, no fsync per commit
         self.db.execute("PRAGMA busy_timeout=60000")
         self.db.executescript(SCHEMA)
         self._migrate()

@@ -125,13 +125,15 @@ def public_first_cases(problem: Problem, seed: int = 1) -> list[dict]:
 
 
 def search(problem: Problem | str, path: str | Path, seconds: float = 10.0, seed: int = 1, *,
-           trusted: bool | None = None, build_from=None) -> Counterexample | None:
+           trusted: bool | None = None, build_from=None, build_store: str | None = None) -> Counterexample | None:
     """A small input (public families only, shrunk) that the submission at ``path`` fails with WA,
     PE or RE, found within ``seconds`` (plus one test's limits), or None. Never the input of a
     test of the problem. ``ValueError`` when the problem has no generator (its reference
     answers) or ``path`` is not a file. ``trusted``: as :class:`grader.contest.judge.Judge`'s.
     ``build_from``: a judge that kept its build of ``path`` (a C++ file is then not compiled
-    again; see :func:`grader.contest.stress.stress`). A compile is not part of ``seconds``."""
+    again; see :func:`grader.contest.stress.stress`); ``build_store``: a folder where a judge of
+    another process left its build (:meth:`grader.contest.judge.Judge.store_build`). A compile is
+    not part of ``seconds``."""
     problem = load_problem(problem) if isinstance(problem, str) else problem
     if not seconds > 0:
         raise ValueError(f"counterexample search: seconds must be positive, got {seconds!r}")
@@ -142,7 +144,7 @@ def search(problem: Problem | str, path: str | Path, seconds: float = 10.0, seed
     hidden = hidden_inputs(problem)
     failure = engine.stress(problem, path, seconds, seed=seed, first=public_first_cases(problem, seed),
                             exclude=hidden, verdicts=TRIGGERS, max_chars=INPUT_MAX_CHARS, trusted=trusted,
-                            build_from=build_from)
+                            build_from=build_from, build_store=build_store)
     if (failure is None or len(failure.input_text) > INPUT_MAX_CHARS
             or engine.normalized(failure.input_text) in hidden):
         return None  # the engine never judges a test's input: the second check is a guard
@@ -162,20 +164,22 @@ def failing_groups(result: JudgeResult) -> dict[str, str]:
 
 
 def attach(result: JudgeResult, problem: Problem, path: str | Path, seconds: float | None = None,
-           seed: int = 1, *, trusted: bool | None = None, build_from=None) -> Counterexample | None:
+           seed: int = 1, *, trusted: bool | None = None, build_from=None,
+           build_store: str | None = None) -> Counterexample | None:
     """Search once for ``result``'s submission when a group failed with WA, PE or RE, and put the
     counterexample on the failing groups (see the module's docstring); nothing when none failed
     so or the budget is 0. ``seconds``: the budget (default: the problem's ``course.yaml``).
     ``result.extra["counterexample_search"]`` says what the search did (found or not, its
     seconds, or why none ran). ``build_from``: the judge that judged ``result`` with
-    :attr:`~grader.contest.judge.Judge.keep_build` set: its build is reused, not compiled again."""
+    :attr:`~grader.contest.judge.Judge.keep_build` set: its build is reused, not compiled again;
+    ``build_store``: the folder where the judge left it (:meth:`~grader.contest.judge.Judge.store_build`)."""
     budget = problem.counterexample_seconds if seconds is None else seconds
     groups = failing_groups(result)
     if not groups or budget <= 0:
         return None
     t0 = time.monotonic()
     try:
-        cx = search(problem, path, budget, seed, trusted=trusted, build_from=build_from)
+        cx = search(problem, path, budget, seed, trusted=trusted, build_from=build_from, build_store=build_store)
     except ValueError as exc:  # no reference answers in this copy of the problem, a vanished file
         result.extra["counterexample_search"] = {"found": False, "seconds": 0.0, "note": str(exc)}
         result.counterexamples.update({g: None for g in groups})

@@ -18,6 +18,7 @@ import hashlib
 import json
 import os
 import shutil
+import stat
 import sys
 import time
 import traceback
@@ -27,7 +28,7 @@ from typing import Callable, Sequence
 
 from ..judging import hidden_feedback
 from ..judging.check_budget import CheckTimeout, check_seconds, cpu_budget
-from ..judging.compile import COMPILE_LIMITS, COMPILE_WALL_S, CompileResult, build_dir, compile_source
+from ..judging.compile import BINARY_NAME, COMPILE_LIMITS, COMPILE_WALL_S, CompileResult, build_dir, compile_source
 from ..problems import Problem, TestCase, load_problem
 from ..judging.runner import FunctionWorker, RunOutcome, idle_budget_for, output_paths, run_stdio
 from ..jail import Limits, Sandbox
@@ -148,6 +149,10 @@ class Judge:
         #: keep the last build between judgings (``stress`` judges one submission many times; it
         #: calls :meth:`drop_build` when done); otherwise the binary is removed after each judging
         self.keep_build = False
+        #: a private folder of the grader (mode 0700) where :meth:`store_build` leaves a build for a
+        #: later judge of the same source in another process (a class's counterexample searches),
+        #: and where :meth:`compiled` takes one from (None: no such folder)
+        self.build_store: str | None = None
         self.problem = load_problem(problem) if isinstance(problem, str) else problem
         self.trusted = trusted
         self.stop_at_first_failure = stop_at_first_failure
@@ -244,13 +249,58 @@ class Judge:
             self.drop_build()
             self._build, other._build = other._build, None
 
+    def store_build(self) -> bool:
+        """Move the kept build's binary (a successful compile) into :attr:`build_store`, named after
+        its source's hash, for a later judge of the same source (:meth:`compiled` takes it from
+        there); the build is dropped either way. False when nothing was stored."""
+        build, self._build = self._build, None
+        if build is None:
+            return False
+        try:
+            (lang, digest), built, done = build
+            if not (self.build_store and built.ok and os.path.isfile(built.binary)):
+                return False
+            stored = os.path.join(self.build_store, f"{lang}-{digest}")
+            shutil.move(built.binary, stored + ".part")
+            os.replace(stored + ".part", stored)
+            return True
+        finally:
+            build[2]()
+
+    def _stored_build(self, key: tuple[str, str]) -> CompileResult | None:
+        """The build :meth:`store_build` left in :attr:`build_store` for ``key``, moved into a folder
+        of this judge's own (taken once), or None."""
+        if not self.build_store:
+            return None
+        stored = os.path.join(self.build_store, f"{key[0]}-{key[1]}")
+        try:
+            st = os.lstat(stored)
+        except OSError:
+            return None
+        if not stat.S_ISREG(st.st_mode) or st.st_uid != os.geteuid():
+            return None
+        folder = build_dir()
+        binary = os.path.join(folder, BINARY_NAME)
+        try:
+            os.replace(stored, binary)
+        except OSError:  # another process took it first, or another file system: compile again
+            shutil.rmtree(folder, ignore_errors=True)
+            return None
+        done = weakref.finalize(self, _remove_build, folder, os.getpid())
+        self._build = (key, CompileResult(ok=True, binary=binary), done)
+        return self._build[1]
+
     def compiled(self, sub: Submission) -> CompileResult:
         """``sub`` compiled in the compile jail; the build is kept until :meth:`drop_build`, the next
-        build or the end of this judge (with :attr:`keep_build`, ``stress`` compiles once)."""
+        build or the end of this judge (with :attr:`keep_build`, ``stress`` compiles once). A build
+        of the same source left in :attr:`build_store` is taken instead of compiling again."""
         key = (sub.language.name, hashlib.sha256(sub.source.encode("utf-8", "surrogatepass")).hexdigest())
         if self._build is not None and self._build[0] == key:
             return self._build[1]
         self.drop_build()
+        stored = self._stored_build(key)
+        if stored is not None:
+            return stored
         folder = build_dir()
         done = weakref.finalize(self, _remove_build, folder, os.getpid())
         built = compile_source(sub.source, sub.language, folder, hide=self.hide, trusted=self.trusted,

@@ -67,13 +67,24 @@ def find_notebook(problem_id: str, cwd: Path | None = None) -> Path:
     return path
 
 
+#: the judge of the last :func:`judge_samples`, by file: its build (a compiled file) is handed to the
+#: counterexample search of :func:`search_samples`, then dropped
+_kept: dict[str, Judge] = {}
+
+
 def judge_samples(problem_id: str, notebook: Path) -> tuple[JudgeResult, Problem]:
     """Judge ``notebook`` (or any submission file the judge takes: ``.py``, ``.cpp``, ...) on the
     samples of ``problem_id`` in the sandbox."""
     problem = sample_problem(load_problem(problem_id))
     # the student's own file: in the kernel jail where there is one, else in the trusted mode
     judge = Judge(problem, hide=[str(notebook.resolve().parent)], trusted=True)
-    return judge.judge_path(notebook), problem
+    judge.keep_build = True  # a compiled file's build serves its counterexample search too
+    result = judge.judge_path(notebook)
+    for earlier in _kept.values():  # one kept build at a time
+        earlier.drop_build()
+    _kept.clear()
+    _kept[str(notebook)] = judge
+    return result, problem
 
 
 def parse_line(line: str, cwd: Path | None = None) -> tuple[str, Path | None]:
@@ -110,10 +121,15 @@ def search_samples(problem_id: str, result: JudgeResult, path: Path, seconds: fl
     here (a copy of the problems without the reference answers); "" when no sample failed so."""
     from .counterexample import attach, failing_groups
 
-    if not failing_groups(result):
-        return ""
-    problem = load_problem(problem_id)
-    cx = attach(result, problem, path, seconds, trusted=True)
+    kept = _kept.pop(str(path), None)  # the build of judge_samples (a C++ file: not compiled again)
+    try:
+        if not failing_groups(result):
+            return ""
+        problem = load_problem(problem_id)
+        cx = attach(result, problem, path, seconds, trusted=True, build_from=kept)
+    finally:
+        if kept is not None:
+            kept.drop_build()
     search = result.extra.get("counterexample_search") or {}
     if cx is None:
         note = search.get("note") or "none found" if search else "off for this problem"

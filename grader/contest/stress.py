@@ -369,7 +369,8 @@ def stress(problem_id: str | Problem, path: str | Path, seconds: float = 10.0, s
            log: Callable[[str], None] = lambda s: None, stats: Stats | None = None,
            first: list[dict] | None = None, exclude: Collection[str] = (),
            verdicts: Collection[Verdict] | None = None, max_chars: int | None = None,
-           trusted: bool | None = None, build_from: Judge | None = None) -> Failure | None:
+           trusted: bool | None = None, build_from: Judge | None = None,
+           build_store: str | None = None) -> Failure | None:
     """Search for a failing input of ``path`` on ``problem_id`` (an id or a loaded problem) for
     ``seconds``; the smallest failure found that fails alone too (shrunk as far as the time
     allows), or None. Ends within ``seconds`` plus one test's limits. ``stats`` (if given) receives
@@ -382,7 +383,8 @@ def stress(problem_id: str | Problem, path: str | Path, seconds: float = 10.0, s
     ``trusted``: as :class:`grader.contest.judge.Judge`'s. A compiled submission is compiled
     once, before the clock starts (the build is not the search's time), or not at all when
     ``build_from`` (a judge that kept its build of the same file, :attr:`Judge.keep_build`)
-    hands its build over (:meth:`Judge.adopt_build`)."""
+    hands its build over (:meth:`Judge.adopt_build`), or ``build_store`` holds one
+    (:meth:`Judge.store_build`: a judge of another process left it there)."""
     problem = load_problem(problem_id) if isinstance(problem_id, str) else problem_id
     if problem.generator_path is None or not problem.generator_path.is_file():
         raise ValueError(f"problem {problem.id!r}: stress needs the problem's generator (the reference answers)")
@@ -394,6 +396,7 @@ def stress(problem_id: str | Problem, path: str | Path, seconds: float = 10.0, s
                      None if verdicts is None else frozenset(verdicts), max_chars, trusted)
     try:
         if runner.sub.compiled:
+            runner.judge.build_store = build_store
             if build_from is not None:
                 runner.judge.adopt_build(build_from)
             runner.judge.compiled(runner.sub)   # reused when adopted; a compile error is judged CE below

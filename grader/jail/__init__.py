@@ -15,6 +15,7 @@ One entry point: :class:`Sandbox` (with :class:`Limits`) starts jailed children;
 ``fontcache``             matplotlib's font cache, built outside the jail
 ``paths``, ``procs``      path and process-table helpers
 ``doctor``                ``python -m grader.jail``: what this machine gives to root and to this user
+``launcher``              the C launcher of compiled programs (``launcher.c``), built once into the trusted cache
 ``child_bootstrap.py``    the child side (stdlib only, run by path, never imported)
 ========================  =================================================================
 
@@ -34,7 +35,7 @@ from .sandbox import (JAIL_ENV, JAIL_WORKDIR, LOCK_DIR, TRUSTED_ENV, UID_BASE, J
                       bwrap_path, is_root, jail_kind, mechanism, python_roots, refusal_message, refuses_processes,
                       require_jail, uid_processes)
 
-#: The child's program (run with ``python -I -c``; the grader's directory is not visible in the jail).
+#: The child's program (run with ``python -IS -c``; the grader's directory is not visible in the jail).
 BOOTSTRAP_PATH = Path(__file__).with_name("child_bootstrap.py")
 
 __all__ = ["BOOTSTRAP_PATH", "JAIL_ENV", "JAIL_WORKDIR", "LOCK_DIR", "TRUSTED_ENV", "UID_BASE", "JailUnavailable",

@@ -19,6 +19,11 @@ the sandbox started (bubblewrap, its pid-1 reaper and the student's process: the
 namespace, where orphans are reparented to that reaper). There the seccomp filter refuses new
 processes, so the limits of the one student process (RLIMIT_CPU, RLIMIT_AS) are the sandbox's.
 
+Every counter is read through a file descriptor kept open for the group's life
+(:class:`ControlFile`: ``pread`` from offset 0, no open and close per read), the processes'
+``schedstat`` files too (:meth:`Group.usage`): a function-mode test reads each counter it needs
+once before and once after the call.
+
 A child joins its group from the ``preexec`` hook, before it drops privileges, by writing
 its pid to every path of :attr:`Group.procs_files`.
 
@@ -49,6 +54,66 @@ def _read(path: Path) -> str:
 def _write(path: Path, text: str) -> None:
     with open(path, "w") as f:
         f.write(text)
+
+
+class ControlFile:
+    """A control file (cgroup or ``/proc``) opened on first use and kept open: each :meth:`read`
+    is one ``pread`` from its start, each :meth:`write` one ``pwrite``. A file that cannot be
+    opened or read raises :class:`OSError` then, as an ``open`` would.
+
+    >>> f = ControlFile("/proc/self/stat")
+    >>> f.read().split()[0].isdigit(), f.read() != b""
+    (True, True)
+    >>> f.close()
+    """
+
+    __slots__ = ("path", "flags", "fd")
+
+    def __init__(self, path: str, writable: bool = False):
+        self.path = path
+        self.flags = (os.O_RDWR if writable else os.O_RDONLY) | os.O_CLOEXEC
+        self.fd = -1
+
+    def _open(self) -> int:
+        if self.fd < 0:
+            self.fd = os.open(self.path, self.flags)
+        return self.fd
+
+    def read(self, size: int = 4096) -> bytes:
+        """The whole content (up to ``size`` bytes at a time, read until the end)."""
+        fd = self._open()
+        data = os.pread(fd, size, 0)
+        if len(data) < size:
+            return data
+        parts = [data]
+        while True:
+            more = os.pread(fd, size, sum(len(p) for p in parts))
+            if not more:
+                return b"".join(parts)
+            parts.append(more)
+
+    def write(self, data: bytes) -> None:
+        os.pwrite(self._open(), data, 0)
+
+    def close(self) -> None:
+        if self.fd >= 0:
+            os.close(self.fd)
+            self.fd = -1
+
+
+def _schedstat_fields(files: dict[int, ControlFile], pid: int) -> list[bytes]:
+    """The fields of ``/proc/<pid>/schedstat`` through a descriptor kept in ``files`` (a pid's
+    file keeps naming the process it was opened for: a reused pid number fails, and is opened again)."""
+    f = files.get(pid)
+    if f is None:
+        f = files[pid] = ControlFile(f"/proc/{pid}/schedstat")
+    try:
+        return f.read(256).split()
+    except OSError:
+        f.close()
+        del files[pid]
+        f = files[pid] = ControlFile(f"/proc/{pid}/schedstat")
+        return f.read(256).split()
 
 
 def _own_groups() -> dict[str, str]:
@@ -83,9 +148,37 @@ class Group:
     def __init__(self) -> None:
         self.procs_files: list[str] = []  # where the child writes its pid (preexec)
         self.limit_bytes = 0
+        self._procs: ControlFile | None = None
+        self._sched: dict[int, ControlFile] = {}  # pid -> its schedstat, kept open
 
     def cpu_seconds(self) -> float:  # pragma: no cover - overridden
         return 0.0
+
+    def usage(self, fallback: int = 0) -> tuple[float, float]:
+        """(CPU seconds used by the whole group so far, 0.0 when unreadable; seconds its processes
+        spent runnable but waiting for a CPU: ``schedstat`` field 2, summed over the processes in
+        it now, or of process ``fallback`` when it lists none)."""
+        pids = self.pids() or ([fallback] if fallback else [])
+        try:
+            cpu = self.cpu_seconds()
+        except (OSError, ValueError):
+            cpu = 0.0
+        return cpu, self.runqueue_seconds(pids)
+
+    def runqueue_seconds(self, pids: list[int]) -> float:
+        """Run-queue wait of ``pids`` (``schedstat`` field 2, read through kept descriptors)."""
+        total = 0.0
+        for pid in pids:
+            try:
+                total += int(_schedstat_fields(self._sched, pid)[1]) / 1e9
+            except (OSError, IndexError, ValueError):
+                gone = self._sched.pop(pid, None)
+                if gone is not None:
+                    gone.close()
+        if len(self._sched) > len(pids):  # forget the processes that left
+            for pid in set(self._sched) - set(pids):
+                self._sched.pop(pid).close()
+        return total
 
     def peak_memory_mb(self) -> float:  # pragma: no cover - overridden
         return 0.0
@@ -99,15 +192,22 @@ class Group:
 
     def pids(self) -> list[int]:
         """The processes in the group now (host pids), from its first ``cgroup.procs``."""
-        for name in self.procs_files[:1]:
-            try:
-                return [int(x) for x in _read(Path(name)).split()]
-            except (OSError, ValueError):
-                return []
-        return []
+        if not self.procs_files:
+            return []
+        if self._procs is None:
+            self._procs = ControlFile(self.procs_files[0])
+        try:
+            return [int(x) for x in self._procs.read().split()]
+        except (OSError, ValueError):
+            return []
 
     def close(self) -> None:
-        pass
+        """Close the kept descriptors (subclasses also remove what they created)."""
+        for f in [self._procs, *self._sched.values(), *getattr(self, "_files", {}).values()]:
+            if f is not None:
+                f.close()
+        self._procs = None
+        self._sched.clear()
 
 
 class _V1(Group):
@@ -126,18 +226,22 @@ class _V1(Group):
                 pass
         _write(dirs["pids"] / "pids.max", str(processes))
         self.procs_files = [str(d / "cgroup.procs") for d in dirs.values()]
+        self._files = {"cpu": ControlFile(str(dirs["cpuacct"] / "cpuacct.usage")),
+                       "peak": ControlFile(str(mem / "memory.max_usage_in_bytes"), writable=True),
+                       "oom": ControlFile(str(mem / "memory.oom_control")),
+                       "failcnt": ControlFile(str(mem / "memory.failcnt"))}
         self._kills0 = 0
         self.reset_peak()
 
     def cpu_seconds(self) -> float:
-        return int(_read(self.dirs["cpuacct"] / "cpuacct.usage")) / 1e9
+        return int(self._files["cpu"].read(64)) / 1e9
 
     def peak_memory_mb(self) -> float:
-        return int(_read(self.dirs["memory"] / "memory.max_usage_in_bytes")) / (1 << 20)
+        return int(self._files["peak"].read(64)) / (1 << 20)
 
     def reset_peak(self) -> None:
         try:
-            _write(self.dirs["memory"] / "memory.max_usage_in_bytes", "0")
+            self._files["peak"].write(b"0")
         except OSError:
             pass
         self._kills0 = self._oom_kills()
@@ -145,15 +249,16 @@ class _V1(Group):
     def _oom_kills(self) -> int:
         # reaching the limit only reclaims page cache (memory.failcnt counts that too); an OOM
         # kill is what the submission's processes together going over it does
-        for line in _read(self.dirs["memory"] / "memory.oom_control").splitlines():
-            if line.startswith("oom_kill "):
+        for line in self._files["oom"].read().splitlines():
+            if line.startswith(b"oom_kill "):
                 return int(line.split()[1])
-        return int(_read(self.dirs["memory"] / "memory.failcnt"))  # old kernels: no counter
+        return int(self._files["failcnt"].read(64))  # old kernels: no counter
 
     def memory_limit_hit(self) -> bool:
         return self._oom_kills() > self._kills0
 
     def close(self) -> None:
+        super().close()
         for d in self.dirs.values():
             try:
                 d.rmdir()
@@ -171,27 +276,36 @@ class _V2(Group):
         _write(path / "memory.max", str(self.limit_bytes))
         _write(path / "pids.max", str(processes))
         self.procs_files = [str(path / "cgroup.procs")]
+        # memory.peak is written and read through the same descriptor: since Linux 6.12 a write
+        # resets the peak seen by later reads of that descriptor (older kernels refuse the write)
+        self._files = {"cpu": ControlFile(str(path / "cpu.stat")),
+                       "peak": ControlFile(str(path / "memory.peak"), writable=True),
+                       "events": ControlFile(str(path / "memory.events"))}
         self._events0 = 0
         self.reset_peak()
 
     def cpu_seconds(self) -> float:
-        for line in _read(self.path / "cpu.stat").splitlines():
-            if line.startswith("usage_usec "):
+        for line in self._files["cpu"].read().splitlines():
+            if line.startswith(b"usage_usec "):
                 return int(line.split()[1]) / 1e6
         return 0.0
 
     def peak_memory_mb(self) -> float:
-        return int(_read(self.path / "memory.peak")) / (1 << 20)
+        try:
+            return int(self._files["peak"].read(64)) / (1 << 20)
+        except PermissionError:  # a memory.peak that cannot be opened for writing: read-only
+            self._files["peak"] = ControlFile(str(self.path / "memory.peak"))
+            return int(self._files["peak"].read(64)) / (1 << 20)
 
     def _oom_kills(self) -> int:
-        for line in _read(self.path / "memory.events").splitlines():
-            if line.startswith("oom_kill "):
+        for line in self._files["events"].read().splitlines():
+            if line.startswith(b"oom_kill "):
                 return int(line.split()[1])
         return 0
 
     def reset_peak(self) -> None:
         try:  # writing resets the peak on Linux >= 6.12
-            _write(self.path / "memory.peak", "0")
+            self._files["peak"].write(b"0")
         except OSError:
             pass
         self._events0 = self._oom_kills()
@@ -200,6 +314,7 @@ class _V2(Group):
         return self._oom_kills() > self._events0
 
     def close(self) -> None:
+        super().close()
         try:
             self.path.rmdir()
         except OSError:
@@ -221,8 +336,16 @@ class _ProcSum(Group):
         return self._pids()
 
     def cpu_seconds(self) -> float:
+        return self._cpu(self._pids())
+
+    def usage(self, fallback: int = 0) -> tuple[float, float]:
+        """As :meth:`Group.usage`, from one walk of the processes."""
+        pids = self._pids()
+        return self._cpu(pids), self.runqueue_seconds(pids or ([fallback] if fallback else []))
+
+    def _cpu(self, pids: list[int]) -> float:
         total = 0.0
-        for pid in self._pids():
+        for pid in pids:
             try:
                 with open(f"/proc/{pid}/stat", "rb") as f:
                     fields = f.read().rsplit(b")", 1)[1].split()
@@ -283,11 +406,11 @@ class ProcTree(_ProcSum):
         self.roots: list[int] = []
         self._last: dict[tuple[int, bytes], float] = {}  # (pid, start time) -> its own CPU when last seen
 
-    def cpu_seconds(self) -> float:
+    def _cpu(self, pids: list[int]) -> float:
         """Each process's own CPU (not ``cutime``: bubblewrap's reaper collects the student's
         process, which would count it twice), as last seen: a process that has exited (a stdio
         run) still counts what it had used at the last sample (samples: :data:`SAMPLE_S`)."""
-        for pid in self._pids():
+        for pid in pids:
             try:
                 with open(f"/proc/{pid}/stat", "rb") as f:
                     fields = f.read().rsplit(b")", 1)[1].split()

@@ -1,6 +1,13 @@
-"""Child side of the judge: runs INSIDE the sandbox, started as ``python -I child_bootstrap.py CONFIG``.
+"""Child side of the judge: runs INSIDE the sandbox, as ``python -IS -c LOADER CONFIG``.
 
-Standard library only, and never imported by the grader itself. It
+The grader compiles this file once and sends the code object (``marshal``) first on the control
+pipe; ``LOADER`` (:data:`grader.judging.runner.LOADER`) only reads and runs it. Run by hand,
+``python -I child_bootstrap.py CONFIG`` does the same work.
+
+Standard library only, and never imported by the grader itself. Its start-up imports only what
+the interpreter has loaded already and the C half of ``json`` (``_json``): the ``json`` package,
+``traceback`` and ``linecache`` all import ``re``, which alone cost more CPU than the bare
+interpreter's start; they are imported when an error or a violation needs them. It
 
 1. installs an audit hook (PEP 578) that reports forbidden imports and operations (creating
    processes, signalling other processes, sockets, reading or listing files outside the Python
@@ -18,6 +25,7 @@ Standard library only, and never imported by the grader itself. It
    become lists and numbers); anything else is reported as a wrong type, never passed on.
 
 Protocol (one JSON object per line), parent -> child on fd ``ctl_in``:
+    (before it, for the loader: this program's length in 12 digits, then its marshalled code)
     {"source": str, "filename": str}             first line
     {"id": int, "args": [...]}                   function mode, one per test
 child -> parent on fd ``ctl_out``:
@@ -28,19 +36,62 @@ child -> parent on fd ``ctl_out``:
                                                  then waits (2 s at most) until the parent, having
                                                  measured the jail's tmpfs, closes ``ctl_in``
 
-Example (what the parent runs):
-    python -I grader/child_bootstrap.py '{"mode": "function", "entry": "delaunay", ...}'
+Example (what the parent runs, LOADER reading this program from fd 5 first):
+    python -IS -c LOADER '{"mode": "function", "entry": "delaunay", "ctl_in": 5, ...}'
 """
 
-import json
-import linecache
+import _json
 import os
 import select
 import sys
-import traceback
 import types
 
-CONFIG = json.loads(sys.argv[1])
+
+class _ScanContext:
+    """What ``_json.make_scanner`` reads: ``json.loads``'s defaults (NaN and the infinities accepted)."""
+
+    strict = True
+    object_hook = None
+    object_pairs_hook = None
+    parse_float = float
+    parse_int = int
+    parse_constant = {"NaN": float("nan"), "Infinity": float("inf"), "-Infinity": float("-inf")}.__getitem__
+    memo: dict = {}
+
+
+_SCAN = _json.make_scanner(_ScanContext())
+
+
+def _json_type_error(obj):
+    raise TypeError(f"Object of type {type(obj).__name__} is not JSON serializable")
+
+
+#: json.dumps(obj, allow_nan=True, separators=(",", ":")), from the same C encoder it uses
+_ENCODER = _json.make_encoder({}, _json_type_error, _json.encode_basestring_ascii, None, ":", ",", False, False, True)
+
+
+def _loads(text):
+    """``json.loads`` of one protocol line (the parent's: str or UTF-8 bytes)."""
+    if isinstance(text, (bytes, bytearray)):
+        text = text.decode("utf-8", "surrogatepass")
+    text = text.strip(" \t\n\r")
+    try:
+        obj, end = _SCAN(text, 0)
+    except StopIteration as exc:
+        raise ValueError(f"not JSON (at character {exc.value})") from None
+    if end != len(text):
+        raise ValueError(f"not JSON (extra data at character {end})")
+    return obj
+
+
+CONFIG = _loads(sys.argv[1])
+if CONFIG.get("site_paths") is not None:  # started with -S: the parent named the site-packages directories
+    sys.path.extend(p for p in CONFIG["site_paths"] if p not in sys.path)
+    import site  # with -S importing it adds no path; it gives the builtins that site would (exit, quit, help)
+
+    site.setquit()
+    site.setcopyright()
+    site.sethelper()
 CTL_IN, CTL_OUT = CONFIG["ctl_in"], CONFIG["ctl_out"]
 FORBIDDEN = tuple(CONFIG["forbidden"])
 #: compiled engine module -> engine name ("matplotlib._qhull" -> "Qhull"): forbidden whoever imports it
@@ -59,12 +110,17 @@ class SandboxViolation(BaseException):
     """Raised in student code for a forbidden operation (BaseException: ``except Exception`` misses it)."""
 
 
-def _send(obj):
+def _encode(obj):
+    return "".join(_ENCODER(obj, 0))
+
+
+def _send(obj, text=None):
+    """Send ``obj`` as one JSON line (``text``: the same, already encoded by :func:`_encode`)."""
     try:  # what the submission printed so far reaches its file before the reply (shown for failing tests)
         sys.stdout.flush()
     except BaseException:  # noqa: BLE001 - a flood (EFBIG) is judged by the parent
         pass
-    data = (json.dumps(obj, allow_nan=True, separators=(",", ":")) + "\n").encode()
+    data = ((_encode(obj) if text is None else text) + "\n").encode()
     view = memoryview(data)
     while view:
         n = os.write(CTL_OUT, view)
@@ -122,7 +178,7 @@ def _context():
     lib = None
     for f in _frames():
         if f.f_code.co_filename == SUBMISSION_FILE:
-            src = linecache.getline(SUBMISSION_FILE, f.f_lineno).strip()[:120]
+            src = _source_line(f.f_lineno)[:120]
             where = f"line {f.f_lineno} of your code: {src}"
             return f" (in {lib}, called from {where})" if lib else f" (at {where})"
         if lib is None and not _is_machinery(f):
@@ -292,10 +348,34 @@ class _ImportGuard:
         pass
 
 
+#: the submission's source lines (set when it is loaded)
+_SOURCE_LINES = []
+
+
+def _source_line(lineno):
+    """Line ``lineno`` of the submission, stripped ('' when there is none)."""
+    return _SOURCE_LINES[lineno - 1].strip() if lineno and 0 < lineno <= len(_SOURCE_LINES) else ""
+
+
+def _line_of(filename, lineno):
+    """A frame's source line: the submission's from its source, a library's through ``linecache``."""
+    if filename == SUBMISSION_FILE:
+        return _source_line(lineno)
+    try:
+        import linecache
+
+        return linecache.getline(filename, lineno or 0).strip()
+    except BaseException:  # noqa: BLE001 - the student may have broken imports: no line then
+        return ""
+
+
 def _error_info(exc):
-    tb = traceback.extract_tb(exc.__traceback__)
-    frames = [f for f in tb if f.filename == SUBMISSION_FILE] or list(tb[-1:])
-    lines = [f"line {f.lineno}, in {f.name}: {(f.line or '').strip()}" for f in frames[-4:]]
+    tb, frames = exc.__traceback__, []
+    while tb is not None:  # what traceback.extract_tb lists: (file, line, function), outermost first
+        frames.append((tb.tb_frame.f_code.co_filename, tb.tb_lineno, tb.tb_frame.f_code.co_name))
+        tb = tb.tb_next
+    frames = [f for f in frames if f[0] == SUBMISSION_FILE] or frames[-1:]
+    lines = [f"line {n}, in {name}: {_line_of(file, n)}" for file, n, name in frames[-4:]]
     text = f"{type(exc).__name__}: {exc}"
     return {"type": type(exc).__name__, "message": text[:2000], "where": lines}
 
@@ -324,13 +404,24 @@ def _to_json(value, depth=0):
     raise TypeError(f"{t.__module__}.{t.__qualname__}".removeprefix("builtins."))
 
 
+class _SourceLoader:
+    """The submission's ``__loader__``: ``linecache`` asks it for the source of the module's frames."""
+
+    def __init__(self, source):
+        self._source = source
+
+    def get_source(self, name):
+        return self._source
+
+
 def _load(source, as_main):
     name = "__main__" if as_main else "submission"
     module = types.ModuleType(name)
     module.__file__ = SUBMISSION_FILE
     module.__builtins__ = __builtins__
     sys.modules[name] = module
-    linecache.cache[SUBMISSION_FILE] = (len(source), None, source.splitlines(True), SUBMISSION_FILE)
+    _SOURCE_LINES[:] = source.splitlines()
+    module.__loader__ = _SourceLoader(source)  # tracebacks the student prints find its lines (linecache)
     code = compile(source, SUBMISSION_FILE, "exec")  # SyntaxError is reported by the caller
     exec(code, module.__dict__)
     return module
@@ -357,7 +448,7 @@ def main():
     if CONFIG["mode"] == "exec":
         _exec_program()
     lines = _read_lines(CTL_IN)
-    first = json.loads(next(lines))
+    first = _loads(next(lines))
     sys.argv = [SUBMISSION_FILE]
     sys.path[:0] = [os.getcwd()]
     sys.meta_path.insert(0, _ImportGuard)
@@ -388,7 +479,7 @@ def main():
         os._exit(0)
     _send({"loaded": True})
     for raw in lines:
-        request = json.loads(raw)
+        request = _loads(raw)
         rid = request["id"]
         try:
             result = entry(*request["args"])
@@ -400,16 +491,15 @@ def main():
         except BaseException as exc:  # noqa: BLE001
             _send({"id": rid, "error": _error_info(exc)})
             continue
-        try:
-            payload = _to_json(result)
-            json.dumps(payload, allow_nan=True)
+        try:  # converted and encoded once: what cannot be encoded is a wrong type
+            text = _encode({"id": rid, "ok": _to_json(result)})
         except (TypeError, ValueError) as exc:
             _send({"id": rid, "bad_type": str(exc)})
             continue
         except RecursionError:
             _send({"id": rid, "bad_type": "nested too deeply"})
             continue
-        _send({"id": rid, "ok": payload})
+        _send(None, text)
     os._exit(0)
 
 

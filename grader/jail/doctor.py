@@ -4,7 +4,9 @@ and to this user, and why.
 It probes bubblewrap (as this user, and as root for an unprivileged uid too), reads the kernel's
 user-namespace settings and the cgroup accounting root would get, and prints one line for each
 account with the jail it gets (or that grading refuses there, and the fixes), and where root's
-sandbox uid locks are and whether that folder is root's alone (:mod:`grader.jail.uidpool`).
+sandbox uid locks are and whether that folder is root's alone (:mod:`grader.jail.uidpool`), and
+what starts compiled programs in the run jail: the C launcher or the Python bootstrap
+(:mod:`grader.jail.launcher`).
 
 Example:
     >>> "this user" in report()                                    # doctest: +SKIP
@@ -17,7 +19,7 @@ import os
 import sys
 from pathlib import Path
 
-from . import cgroups, seccomp, uidpool
+from . import cgroups, launcher, seccomp, uidpool
 from .sandbox import bwrap_path, bwrap_status, is_root, jail_kind
 
 #: The kernel settings that allow or forbid unprivileged user namespaces (where they exist).
@@ -76,6 +78,7 @@ def report() -> str:
                      "namespaces jail, with cgroup accounting where it can create a cgroup")
         lines.append(_user_line(f"this user (uid {os.getuid()})", *bwrap_status(None)))
         lines.append(uidpool.describe())
+    lines.append(launcher.status())
     return "\n".join(lines)
 
 

@@ -13,7 +13,8 @@ compiled program's run jail.
   under ``/usr``. New processes are allowed (no "no new processes" seccomp filter), the network,
   IPC, UTS and pid namespaces are new (no network), the rest of the seccomp deny-list applies;
 * **a compiled program's run** (:data:`JAIL_PROGRAM`): the run jail of a Python submission, plus
-  the binary bound read-only at :data:`JAIL_PROGRAM`; the sandbox is asked to refuse new
+  the binary bound read-only at :data:`JAIL_PROGRAM` and the C launcher that starts it
+  (:mod:`grader.jail.launcher`) at :data:`JAIL_LAUNCHER`; the sandbox is asked to refuse new
   processes (``Sandbox(no_processes=True)``) as root too, since no audit hook watches a binary.
 
 Run: nothing to run here; ``python -m grader.jail`` shows what the machine gives.
@@ -35,6 +36,8 @@ from .paths import under
 COMPILE_WORKDIR = "/tmp/work"
 #: Where a compiled program's binary is seen in its run jail (read-only).
 JAIL_PROGRAM = "/submission/program"
+#: Where the C launcher of compiled programs is seen in their run jail (read-only).
+JAIL_LAUNCHER = "/submission/launcher"
 #: The only ``/etc`` entries the compile jail shows: the dynamic loader's (the compiler's own
 #: programs are dynamically linked).
 COMPILE_ETC = ("/etc/ld.so.cache", "/etc/ld.so.conf", "/etc/ld.so.conf.d", "/etc/alternatives")

@@ -62,7 +62,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Sequence
 
-from . import cgroups, engines, profiles, seccomp, uidpool
+from . import cgroups, engines, launcher, profiles, seccomp, uidpool
+from .bwrap_probe import bwrap_path, bwrap_status
 from .errors import JailUnavailable
 from .fontcache import matplotlib_fontlist
 from .mounts import CLONE_NEWNET, CLONE_NEWUSER, JAIL_WORKDIR, MPL_DIR, Plan, jail_filesystem, stage_for_bwrap, unshare
@@ -97,7 +98,6 @@ BWRAP_PROCESSES = 2 + 8
 #: Not root: processes of the sandbox's user namespace besides the student's threads (the
 #: pid-1 reaper), added to the RLIMIT_NPROC set inside it.
 USERNS_EXTRA = 1
-_bwrap_works: dict[tuple[str, int | None], tuple[bool, str]] = {}
 _last_mechanism = ""
 
 
@@ -135,11 +135,6 @@ def _expand_cover(cover: tuple[str, ...]) -> tuple[list[str], list[str]]:
     return modules, outermost(sorted((set(given) - wrappers) | set(engines.cover_paths(modules))))
 
 
-def bwrap_path() -> str | None:
-    """The bubblewrap binary, if installed."""
-    return shutil.which("bwrap", path="/usr/bin:/bin:/usr/local/bin")
-
-
 def jail_kind(uid: int | None = None) -> str:
     """The jail this process can build: ``bwrap`` or ``namespaces`` (root without a working
     bubblewrap) as root; ``bwrap`` or ``none`` (no kernel jail: grading refuses) otherwise.
@@ -158,33 +153,6 @@ def jail_kind(uid: int | None = None) -> str:
             raise RuntimeError(f"{JAIL_ENV}=bwrap but bubblewrap is not installed (apt-get install bubblewrap)")
         return "namespaces"
     return "bwrap" if bwrap_status(UID_BASE if uid is None else uid)[0] else "namespaces"
-
-
-def bwrap_status(uid: int | None) -> tuple[bool, str]:
-    """(works, why not) for bubblewrap started by ``uid`` (root drops to it first; None: this
-    process as it is). Probed once per process and uid."""
-    path = bwrap_path()
-    if path is None:
-        return False, "bubblewrap is not installed"
-    if (path, uid) not in _bwrap_works:
-        _bwrap_works[path, uid] = _probe_bwrap(path, uid)
-    return _bwrap_works[path, uid]
-
-
-def _probe_bwrap(path: str, uid: int | None) -> tuple[bool, str]:
-    """Can bubblewrap create its namespaces here, started by ``uid`` (user namespaces enabled)?"""
-    def drop() -> None:
-        os.setgroups([])
-        os.setresgid(uid, uid, uid)
-        os.setresuid(uid, uid, uid)
-    try:
-        r = subprocess.run([path, "--unshare-all", "--die-with-parent", "--ro-bind", "/", "/", "true"],
-                           preexec_fn=drop if uid is not None else None, timeout=30, stdin=subprocess.DEVNULL,
-                           stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
-    except (OSError, subprocess.SubprocessError) as exc:
-        return False, f"bubblewrap could not be started: {exc}"
-    why = r.stderr.decode(errors="replace").strip().splitlines()[-1:] or [f"exit code {r.returncode}"]
-    return r.returncode == 0, "" if r.returncode == 0 else f"bubblewrap cannot create a user namespace ({why[0]})"
 
 
 def refusal_message(reason: str) -> str:
@@ -232,7 +200,8 @@ class Sandbox:
     ``trusted`` (default: ``$GRADER_TRUSTED`` is ``1``) allows running without a kernel jail where
     none can be built, instead of raising :class:`JailUnavailable` (a student's own code only).
     ``profile="compile"``: the compile jail (:mod:`grader.jail.profiles`; host folder :attr:`scratch`);
-    ``program``: a binary shown read-only in the run jail; ``no_processes``: the seccomp filter kills
+    ``program``: a binary shown read-only in the run jail, started by the C launcher (:attr:`launcher`,
+    :mod:`grader.jail.launcher`) or the Python bootstrap; ``no_processes``: the seccomp filter kills
     new processes (default: without a cgroup). Both need bubblewrap (``namespaces`` refuses them).
     """
 
@@ -242,6 +211,7 @@ class Sandbox:
         if profile not in ("run", "compile"):
             raise ValueError(f"unknown sandbox profile {profile!r} (run, compile)")
         self.profile, self.program = profile, program
+        self.launcher: str | None = None  #: host path of the C launcher of :attr:`program` (None: the bootstrap)
         self.no_processes = (not is_root()) if no_processes is None else no_processes
         if profile == "compile":
             self.no_processes = False
@@ -263,6 +233,8 @@ class Sandbox:
         self.mechanism = "none"
         #: what the submission keeps in the jail's tmpfs mounts (sampled by the runner)
         self.files = tmpfs.FileUse(tmpfs.sizes(limits))
+        self._inner = (0, 0)  # (a bubblewrap pid, its child inside the jail): see sample_files
+        self._swept = False  # kill_all left no process of the uid and nothing was spawned since
 
     # -- lifecycle -------------------------------------------------------------------------
     def __enter__(self) -> "Sandbox":
@@ -273,6 +245,7 @@ class Sandbox:
                 require_jail()
         self.private_dir = tempfile.mkdtemp(prefix="grader-private-")
         os.chmod(self.private_dir, 0o700)
+        self.launcher = launcher.host_path() if self.program and self.profile == "run" else None
         if self.root_mode:
             try:
                 self._slot = uidpool.acquire()  # UnsafeSharedState, NoFreeSlot: a one-line refusal
@@ -282,6 +255,7 @@ class Sandbox:
             self.uid = self._slot.uid
             self.kill_all()  # leftovers from a crashed grader
             self.kind = jail_kind(self.uid)
+            self._swept = False  # the first jail_kind probes bubblewrap as the uid
             try:
                 self._check_profile()
             except BaseException:
@@ -332,7 +306,8 @@ class Sandbox:
 
     def close(self) -> None:
         """Kill every process of the slot and delete its files (and its cgroup)."""
-        self.kill_all()
+        if not self._swept:  # else the last sweep left none, and none can have started since
+            self.kill_all()
         if isinstance(self.group, cgroups.ProcTree):
             for pid in self.group.roots:
                 if parent(pid) == os.getpid():  # still our child (not reaped: its pid is not reused)
@@ -360,7 +335,7 @@ class Sandbox:
                                                         plan.disk_mb, self._hidden)
             return plan
         if self.kind == "bwrap":
-            expose = outermost(python_roots()) + ([self.program] if self.program else []) \
+            expose = outermost(python_roots()) + [p for p in (self.program, self.launcher) if p] \
                 + ([fontlist] if fontlist else [])  # the font list last (see _bwrap_options)
             # root stages what bubblewrap (started as the sandbox uid) could not reach; a user binds directly
             plan = Plan([], expose, self.private_dir if self.root_mode else "", self._cover, self.files.mounts["/tmp"],
@@ -396,8 +371,8 @@ class Sandbox:
         for h in holds:
             a += ["--size", "4096", "--perms", "0755", "--tmpfs", h]
         for st, path in zip(staged, plan.expose):
-            if path == self.program:
-                a += ["--ro-bind", st, profiles.JAIL_PROGRAM]
+            if path in (self.program, self.launcher):
+                a += ["--ro-bind", st, profiles.JAIL_PROGRAM if path == self.program else profiles.JAIL_LAUNCHER]
             elif path != fontlist:
                 a += ["--ro-bind", st, path]
         for h in inside:
@@ -441,9 +416,11 @@ class Sandbox:
         """Measure what the submission keeps in the jail's tmpfs mounts (:attr:`files`), seen from
         a process inside the jail: for bubblewrap a child of ``pid`` (bubblewrap itself stays in
         the host's mounts), else ``pid``."""
-        if self.kind in ("bwrap", "namespaces"):
-            inner = children(pid)[:1] if self.kind == "bwrap" else [pid]
-            self.files.sample(inner[0] if inner else None)
+        if self.kind == "namespaces":
+            self.files.sample(pid)
+        elif self.kind == "bwrap" and not (self._inner[0] == pid and self.files.sample(self._inner[1])):
+            inner = children(pid)[:1]  # found once while ``pid`` is the same (kept when inside the jail)
+            self._inner = (pid, inner[0]) if inner and self.files.sample(inner[0]) else (0, 0)
 
     def decode_exit(self, code: int) -> int:
         """The student process's exit code as ``waitstatus_to_exitcode`` gives it (negative:
@@ -464,6 +441,11 @@ class Sandbox:
     def program_path(self) -> str:
         """Where the child finds :attr:`program` (the bound copy in a jail, the file itself when trusted)."""
         return profiles.JAIL_PROGRAM if self.kind == "bwrap" else (self.program or "")
+
+    @property
+    def launcher_path(self) -> str:
+        """Where the child finds :attr:`launcher` ("": the Python bootstrap starts the program)."""
+        return (profiles.JAIL_LAUNCHER if self.kind == "bwrap" else self.launcher) if self.launcher else ""
 
     def inner_nproc(self) -> int | None:
         """RLIMIT_NPROC for the child to set on itself once inside its own user namespace (not
@@ -489,6 +471,7 @@ class Sandbox:
     def spawn(self, argv: Sequence[str], stdin: int, stdout: int, stderr: int,
               pass_fds: Sequence[int] = (), cpu_s: float | None = None) -> subprocess.Popen:
         """Start ``argv`` jailed; ``cpu_s`` overrides the RLIMIT_CPU of ``self.limits``."""
+        self._swept = False
         cpu = int(cpu_s if cpu_s is not None else self.limits.cpu_s) + 1
         plan, uid, lim = self._plan, self.uid, self.limits
         # an account's jail sets RLIMIT_NPROC inside its user namespace (inner_nproc); trusted: as before
@@ -574,6 +557,7 @@ class Sandbox:
             # dead and hold no resources; our own zombie children are reaped by our wait4
             left = [p for p in uid_processes(self.uid) if alive(p) or parent(p) == me]
             if not left or time.monotonic() > deadline:
+                self._swept = not left
                 return
             time.sleep(0.01)
 

@@ -69,18 +69,22 @@ class FileUse:
         self.peak.clear()
         self.filled.clear()
 
-    def sample(self, pid: int | None) -> None:
-        """Measure every mount as ``pid`` (a process inside the jail) sees it."""
+    def sample(self, pid: int | None) -> bool:
+        """Measure every mount as ``pid`` (a process inside the jail) sees it; False when none
+        was the jail's (``pid`` gone, or not inside the jail)."""
         if pid is None:
-            return
+            return False
+        inside = False
         for mount, size_mb in self.mounts.items():
             got = used_mb(pid, mount)
             if got is None or abs(got[1] - size_mb) > 0.5:
                 continue  # gone, or not the jail's mount (the process is not inside it yet)
+            inside = True
             used = got[0]
             self.peak[mount] = max(self.peak.get(mount, 0.0), used)
             if (got[1] - used) * (1 << 20) < FULL_SLACK:
                 self.filled.add(mount)
+        return inside
 
     def peak_mb(self) -> float:
         """MiB the submission kept in the jail's file systems at most (summed over the mounts)."""

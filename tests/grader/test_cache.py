@@ -146,6 +146,7 @@ def test_warm_fills_the_cache_with_progress(cache, monkeypatch, capsys):
     n = len([d for d in FIXTURE.parent.iterdir() if (d / "course.yaml").is_file()])
     assert re.search(rf"\[\d+/{n}\] tiny-delaunay: 3 tests, generated in [\d.]+ s", out), out
     assert str(_folder(cache)) in out
+    assert re.search(r"compiled programs: (started by the C launcher|started by the Python bootstrap \(no C)", out), out
     _no_generation(monkeypatch)
     assert grader_main(["warm", "tiny-delaunay"]) == 0
     assert "3 tests, cached" in capsys.readouterr().out

@@ -244,6 +244,43 @@ def test_class_grading_stores_every_score_then_searches_the_failing_ones(tmp_pat
         store.close()
 
 
+def test_class_grading_compiles_a_failing_cpp_submission_once_for_its_search(tmp_path, monkeypatch):
+    """The judge (a pool worker) leaves the binary of a failing C++ submission in the grader's
+    private folder; its search (another worker, after every score) takes it instead of compiling
+    again; the folder is gone afterwards. Compiles are counted in a file (workers are processes)."""
+    from grader.classroom import class_counterexamples, classgrade
+
+    problem = tiny_problem(tmp_path, exhaustive=[{"kind": "points", "points": [[0, 0], [4, 0], [0, 4], [4, 4]],
+                                                  "shuffle": False}])
+    for mod in (classgrade, class_counterexamples, judge_mod):
+        monkeypatch.setattr(mod, "load_problem", lambda pid: problem)
+    subs, log = tmp_path / "subs", tmp_path / "compiles.log"
+    (subs / "carl").mkdir(parents=True)
+    (subs / "carl" / "wrong.cpp").write_text(WRONG_CPP)
+    real = compile_mod.compile_source
+
+    def counted(*args, **kw):
+        with open(log, "a") as f:
+            f.write("compile\n")
+        return real(*args, **kw)
+    monkeypatch.setattr(judge_mod, "compile_source", counted)
+    folders = []
+    real_folder = classgrade._builds_folder
+    monkeypatch.setattr(classgrade, "_builds_folder", lambda *a: folders.append(real_folder(*a)) or folders[-1])
+    out = classgrade.grade_class(problem.id, subs, tmp_path / "results.sqlite", progress=False,
+                                 counterexample_seconds=60)
+    assert [s["verdict"] for s in out] == ["WA"], out
+    from grader.classroom.store import ResultStore
+    store = ResultStore(tmp_path / "results.sqlite")
+    try:
+        groups, search = store.counterexamples("carl", problem.id, store.latest(problem.id)["carl"]["sha"])
+    finally:
+        store.close()
+    assert search["found"] and groups["exhaustive"]["answer"] == "2\n0 1 2\n0 1 2\n", (groups, search)
+    assert log.read_text().count("compile") == 1, "the search compiled the submission again"
+    assert len(folders) == 1 and folders[0] and not Path(folders[0]).exists()
+
+
 def test_the_sample_check_shows_a_counterexample_only_when_a_sample_failed(tmp_path, monkeypatch):
     from grader.contest import sample_check
 
@@ -260,6 +297,26 @@ def test_the_sample_check_shows_a_counterexample_only_when_a_sample_failed(tmp_p
     result = Judge(problem, hide=[str(tmp_path)], trusted=True).judge_path(bad)
     html_text = sample_check.search_samples(problem.id, result, bad, seconds=30)
     assert "a small input your code also gets wrong (WA, 3 elements" in html_text and "your answer:" in html_text
+
+
+def test_the_sample_check_compiles_a_cpp_file_once(tmp_path, monkeypatch):
+    """``judge_samples`` keeps its build and ``search_samples`` hands it to the search."""
+    from grader.contest import sample_check
+
+    problem = tiny_problem(tmp_path, exhaustive=[{"kind": "points", "points": [[0, 0], [4, 0], [0, 4], [4, 4]],
+                                                  "shuffle": False}])
+    monkeypatch.setattr(sample_check, "load_problem", lambda pid: problem)
+    monkeypatch.setattr(sample_check, "sample_problem", lambda p: p)  # its tests stand for samples
+    path = tmp_path / "wrong.cpp"
+    path.write_text(WRONG_CPP)
+    builds = []
+    real = compile_mod.compile_source
+    monkeypatch.setattr(judge_mod, "compile_source", lambda *a, **k: builds.append(1) or real(*a, **k))
+    result, _ = sample_check.judge_samples(problem.id, path)
+    assert result.verdict == "WA", format_table(result)
+    html_text = sample_check.search_samples(problem.id, result, path, seconds=60)
+    assert "a small input your code also gets wrong (WA, 3 elements" in html_text, html_text
+    assert len(builds) == 1 and sample_check._kept == {}, builds
 
 
 def test_a_copy_of_the_problem_without_reference_answers_says_why_there_is_none(tmp_path):

@@ -126,6 +126,7 @@ def test_run_time_failures_are_explained(judge, secret, tmp_path_factory):
 
     assert "exited with code 3" in msg("read_files.cpp"), msg("read_files.cpp")  # 4: an allowed file unreadable
     assert "exited with code 3" in msg("network.cpp")
+    assert "exited with code 3" in msg("launcher_tamper.cpp")  # launcher, program read-only; no fd above 2
     assert "SIGSEGV" in msg("segfault.cpp")
     assert "forbidden system call" in msg("fork.cpp")
 
