@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The course on JupyterHub: install (as root) and optionally start the hub. Run from the checkout:
-#   sudo deploy/jupyterhub/deploy.sh install            # venv, proxy, accounts, exchange, configs, test cache
+#   sudo deploy/jupyterhub/deploy.sh install            # venv, proxy, accounts, exchange, configs, numba seed, test cache
 #   sudo deploy/jupyterhub/deploy.sh start              # the hub in the foreground (Ctrl-C stops it)
 #   sudo deploy/jupyterhub/deploy.sh down               # stop a hub started by start (pid file)
 #   sudo deploy/jupyterhub/deploy.sh exchange           # only nbgrader's exchange (part of install)
@@ -11,6 +11,8 @@
 #   HUB_INSTRUCTORS [hub-instructor]  HUB_STUDENTS [hub-student1,hub-student2,hub-student3]
 #   HUB_PASSWORD    when set, every listed account gets this unix password (demo/PAM logins)
 #   HUB_AUTH [pam]  HUB_PORT [8000]
+#   HUB_NUMBA_SEED [all]  the numba kernels compiled once into the seed every new account's cache
+#                         starts with: "all", or reference_impl.warmup groups ("2d predicates,checkers")
 set -euo pipefail
 REPO="$(cd "$(dirname "$0")/../.." && pwd)"
 HERE="$REPO/deploy/jupyterhub"
@@ -146,10 +148,39 @@ warm_tests() {  # the instructor's test cache filled now, as that account (its o
     # its server sets GRADER_CACHE): the first grading or sample check never waits for the tests
     local instr="${HUB_INSTRUCTORS%%,*}" home
     home="$(getent passwd "$instr" | cut -d: -f6)"
+    # its numba cache starts from the seed, as the hub's pre_spawn would start it (when empty)
+    (cd / && "$HUB_VENV/bin/python" -I -m grader.course.numba_seed seed "$HUB_VENV/numba-seed" "$home/.cache/numba" "$instr")
     (cd / && runuser -u "$instr" -- env HOME="$home" PATH="$HUB_VENV/bin:/usr/bin:/bin" \
         GRADER_PROBLEMS="$COURSE_HOME/course" GRADER_CACHE="$home/.cache/grader" \
         NUMBA_CACHE_DIR="$home/.cache/numba" OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 \
         "$HUB_VENV/bin/python" -m grader warm) || die "could not generate the tests into $instr's cache (see above)"
+}
+
+numba_seed() {  # the kernels compiled once, as the instructor, into a scratch cache, then installed
+    # root-owned (0755/0644) as $HUB_VENV/numba-seed: the hub's pre_spawn copies it into each account
+    # whose ~/.cache/numba is missing or empty (grader/course/numba_seed.py). Rebuilt when the venv
+    # or the list of groups changes; numba re-checks every cached function's sources anyway.
+    local instr="${HUB_INSTRUCTORS%%,*}" home groups="${HUB_NUMBA_SEED:-all}" seed="$HUB_VENV/numba-seed" key scratch
+    [ "$groups" = all ] && groups=""
+    key="$(cat "$HUB_VENV/.course-key")|$groups"
+    if [ -f "$seed/.seed-key" ] && [ "$(cat "$seed/.seed-key")" = "$key" ]; then return 0; fi
+    home="$(getent passwd "$instr" | cut -d: -f6)"
+    scratch="$(mktemp -d /tmp/numba-seed.XXXXXX)"; chmod 0711 "$scratch"
+    install -d -o "$instr" -m 0700 "$scratch/cache"
+    (cd / && runuser -u "$instr" -- env HOME="$home" PATH="$HUB_VENV/bin:/usr/bin:/bin" OMP_NUM_THREADS=1 \
+        OPENBLAS_NUM_THREADS=1 "$HUB_VENV/bin/python" -m grader.course.numba_seed build "$scratch/cache" "$groups") \
+        || { rm -rf "$scratch"; die "could not compile the numba seed (see above)"; }
+    chown root:root "$scratch/cache"; chmod 0700 "$scratch/cache"   # the instructor's part is over
+    rm -rf "$seed.new"
+    # regular files only, root's own copy (no symbolic link of the scratch followed or kept)
+    "$HUB_VENV/bin/python" -I -m grader.course.numba_seed copy "$scratch/cache" "$seed.new" >/dev/null \
+        || { rm -rf "$scratch" "$seed.new"; die "could not install the numba seed"; }
+    rm -rf "$scratch"
+    echo "$key" > "$seed.new/.seed-key"
+    chown -R root:root "$seed.new"; chmod -R u=rwX,go=rX "$seed.new"
+    rm -rf "$seed"; mv "$seed.new" "$seed"
+    "$HUB_VENV/bin/python" -I -m grader.course.numba_seed check "$seed" >/dev/null \
+        || die "the numba seed $seed is not trusted: $("$HUB_VENV/bin/python" -I -m grader.course.numba_seed check "$seed")"
 }
 
 start() {
@@ -167,7 +198,7 @@ down() {
 }
 
 case "${1:-}" in
-    install) venv; proxy; accounts; course; warm_tests; echo "installed under $COURSE_HOME (venv $HUB_VENV)";;
+    install) venv; proxy; accounts; course; numba_seed; warm_tests; echo "installed under $COURSE_HOME (venv $HUB_VENV)";;
     start) start;;
     down) down;;
     exchange) exchange; echo "exchange ready: $EXCHANGE";;

@@ -21,11 +21,17 @@ nbgrader's server and lab extensions on or off for that role.
 import os
 import pwd
 
+try:  # the course venv's grader (a venv installed before the seed existed has none: no seed then)
+    from grader.course.numba_seed import seed_account
+except ImportError:  # pragma: no cover - an old venv
+    seed_account = None
+
 c = get_config()  # noqa: F821 - provided by jupyterhub when it loads this file
 
 COURSE_HOME = os.environ.get("COURSE_HOME", "/opt/delaunay-course")
 STATE = os.environ.get("HUB_STATE", os.path.join(COURSE_HOME, "state"))
-VENV_BIN = os.path.join(os.environ.get("HUB_VENV", os.path.join(COURSE_HOME, "venv")), "bin")
+VENV = os.environ.get("HUB_VENV", os.path.join(COURSE_HOME, "venv"))
+VENV_BIN = os.path.join(VENV, "bin")
 INSTRUCTORS = {u for u in os.environ.get("HUB_INSTRUCTORS", "hub-instructor").split(",") if u}
 STUDENTS = {u for u in os.environ.get("HUB_STUDENTS", "").split(",") if u}
 
@@ -63,14 +69,21 @@ c.Spawner.http_timeout = 120
 
 def pre_spawn(spawner) -> None:
     """Per account: role config, course root, private numba and grader caches (numba writes its
-    cache beside the sources unless told otherwise, and the shared venv is read-only)."""
+    cache beside the sources unless told otherwise, and the shared venv is read-only). A new
+    account's numba cache starts as a copy of the install's seed (the kernels the checkers use,
+    compiled once), so its first sample check does not compile them again."""
     name = spawner.user.name
-    home = pwd.getpwnam(name).pw_dir
+    pw = pwd.getpwnam(name)
+    home = pw.pw_dir
     role = "instructor" if name in INSTRUCTORS else "student"
     env = spawner.environment
     env["PATH"] = f"{VENV_BIN}:/usr/local/bin:/usr/bin:/bin"
     env["JUPYTER_CONFIG_PATH"] = os.path.join(COURSE_HOME, "jupyter", role)
     env["NUMBA_CACHE_DIR"] = os.path.join(home, ".cache", "numba")
+    # copied as the account, only into a missing or empty cache, only from a root-owned seed
+    if seed_account is not None:
+        seed_account(os.path.join(VENV, "numba-seed"), env["NUMBA_CACHE_DIR"], pw.pw_uid, pw.pw_gid,
+                     log=spawner.log.info, python=os.path.join(VENV_BIN, "python"))
     env["GRADER_CACHE"] = os.path.join(home, ".cache", "grader")
     env["GRADER_PROBLEMS"] = os.path.join(COURSE_HOME, "course" if role == "instructor" else "problems")
     env["OMP_NUM_THREADS"] = env["OPENBLAS_NUM_THREADS"] = "1"

@@ -7,6 +7,7 @@
 ``student_edition``       what a student receives (``python -m grader.student_edition OUTDIR``)
 ``public_problems``       the problems without their hidden tests, for students' machines
 ``grades_export``         the course's grades for Canvas and Moodle (``export-grades``)
+``numba_seed``            the course server's compiled kernels, copied into each new account's cache
 ========================  =================================================================
 
 Imports: every room below (classroom, contest, problems, judging, jail). The old module names

@@ -143,29 +143,16 @@ def seed_grader_cache(account: str) -> Path | None:
     return dest
 
 
-def prime_numba_cache(account: str, venv: str) -> None:
-    """Compile, as ``account`` into its ``~/.cache/numba`` (the folder its server gives numba), the
-    kernels every checker uses (``reference_impl.warmup``'s "2d predicates" and "checkers"): the
-    cache :func:`seed_numba_cache` then gives the students. Kernels not compiled here are compiled
-    by each account when first used, as on any deployment."""
-    home = pwd.getpwnam(account).pw_dir
-    code = ("from reference_impl import warmup\n"
-            "for name in ('2d predicates', 'checkers'):\n    warmup.FEATURES[name]()\n")
-    subprocess.run(["runuser", "-u", account, "--", "env", f"HOME={home}", f"NUMBA_CACHE_DIR={home}/.cache/numba",
-                    "OMP_NUM_THREADS=1", f"{venv}/bin/python", "-c", code], cwd="/", check=True, timeout=900)
-
-
 def seed_numba_cache(account: str, dest: Path | None = None) -> Path | None:
-    """Copy the instructor's numba cache (``~/.cache/numba`` of the shared venv's kernels, filled by
-    :func:`prime_numba_cache` and by whatever deploy.sh's ``grader warm`` generated) to ``dest`` (default ``~account/.cache/numba``, the folder the account's
-    server gives numba), owned by ``account`` and private to it (0700); return ``dest``, or None
-    when the instructor has none.
+    """Copy the instructor's numba cache (``~/.cache/numba``: the install's numba seed, which
+    deploy.sh starts it from, and what its ``grader warm`` compiled) to ``dest`` (default
+    ``~account/.cache/numba``), owned by ``account`` and private to it (0700); return ``dest``, or
+    None when the instructor has none.
 
-    Test set-up only, to save CI time: without it each account compiled every kernel of the shared
-    venv again on its first check (numba's cache is per account). The source is trusted (written by
-    the instructor's account during the install, mode 0700 in a 0700 home) and the copy is the
-    account's own; numba checks each cached function's source stamp and its own version before
-    using it, so a copy never runs code compiled from other sources.
+    Test set-up only, for a judge run outside the hub (the probe test) that should not compile
+    every kernel again; the students' caches are seeded by the deployment itself (the hub's
+    ``pre_spawn``, ``grader.course.numba_seed``). numba checks each cached function's source stamp
+    and its own version before using it, so a copy never runs code compiled from other sources.
     """
     src = Path(pwd.getpwnam(INSTRUCTOR).pw_dir) / ".cache" / "numba"
     if not src.is_dir():
@@ -191,14 +178,16 @@ def start_hub(timeout: float = 240) -> Hub:
     env = {**os.environ, "COURSE_HOME": str(home), "HUB_VENV": str(REPO / "build" / "hub-venv"),
            "HUB_INSTRUCTORS": INSTRUCTOR, "HUB_STUDENTS": ",".join(STUDENTS), "HUB_AUTH": "dummy",
            "HUB_DUMMY_PASSWORD": password, "HUB_PORT": str(port), "HUB_API_PORT": str(_free_port()),
-           "HUB_PROXY_API_PORT": str(_free_port())}
+           "HUB_PROXY_API_PORT": str(_free_port()),
+           # CI time: a small seed (not every group), kept with build/hub-venv between runs
+           "HUB_NUMBA_SEED": "2d predicates,checkers"}
     for u in (INSTRUCTOR, *STUDENTS):
         # a fresh class: nothing fetched, submitted or cached by an earlier run (nbgrader lists an
         # assignment as "submitted" from the student's own nbgrader_cache under ~/.local). Emptied
         # before the install, so the class then finds what the install leaves: the instructor's
-        # test and numba caches that deploy.sh fills, as on a real deployment (for CI time the
-        # instructor's tests are seeded from the checkout's first, and the students' numba caches
-        # from the instructor's after: seed_grader_cache, prime_numba_cache, seed_numba_cache).
+        # test and numba caches that deploy.sh fills, and the numba seed the hub copies into each
+        # student's empty cache at spawn, as on a real deployment (for CI time the instructor's
+        # tests are seeded from the checkout's first: seed_grader_cache).
         try:
             h = Path(pwd.getpwnam(u).pw_dir)
         except KeyError:  # the install makes the account
@@ -211,9 +200,6 @@ def start_hub(timeout: float = 240) -> Hub:
                     entry.unlink(missing_ok=True)
     seed_grader_cache(INSTRUCTOR)
     subprocess.run([str(DEPLOY), "install"], env=env, check=True, timeout=900)
-    prime_numba_cache(INSTRUCTOR, env["HUB_VENV"])
-    for u in STUDENTS:
-        seed_numba_cache(u)
     log = home / "hub.log"
     with open(log, "w") as f:
         proc = subprocess.Popen([str(DEPLOY), "start"], env=env, stdout=f, stderr=subprocess.STDOUT,

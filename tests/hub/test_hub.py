@@ -164,6 +164,24 @@ def test_students_fetch_their_feedback(graded):
             assert "≤" in text and "\\le" not in text, "the statement's maths reads as text (no MathJax offline)"
 
 
+def test_the_deploy_seeded_each_students_numba_cache(graded, hub):
+    """Each student's server started with the install's numba seed in its ``~/.cache/numba``:
+    copied by the hub at spawn (its log says so), the student's own and private."""
+    from grader.course.numba_seed import untrusted
+    seed = Path(hub.env["HUB_VENV"]) / "numba-seed"
+    assert untrusted(seed) == ""
+    seeded = {p.relative_to(seed) for p in seed.rglob("*.nbi")}
+    assert seeded, "the install compiled no kernel into the seed"
+    log = hub.log.read_text()
+    for name in SOLUTIONS:
+        pw = pwd.getpwnam(name)
+        cache = Path(pw.pw_dir) / ".cache" / "numba"
+        assert f"numba seed: {sum(p.is_file() for p in seed.rglob('*'))} files copied into {cache}" in log, name
+        assert seeded <= {p.relative_to(cache) for p in cache.rglob("*.nbi")}, name
+        st = os.stat(cache)
+        assert (st.st_uid, st.st_mode & 0o777) == (pw.pw_uid, 0o700), name
+
+
 def test_the_shared_venv_saves_widget_state(hub):
     """A lesson reopened on the hub without its kernel shows its widgets' last pictures."""
     overrides = REPO / "build" / "hub-venv" / "share" / "jupyter" / "lab" / "settings" / "overrides.json"
