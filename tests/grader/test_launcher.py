@@ -146,6 +146,23 @@ def test_without_a_compiler_the_bootstrap_starts_programs(tmp_path, monkeypatch)
     assert "GRADER_LAUNCHER=python" in launcher.status()
 
 
+def test_an_install_without_the_source_falls_back_to_the_bootstrap(tmp_path, monkeypatch, capsys):
+    """A venv installed without the package's data files (no launcher.c): ``grader warm`` and every
+    sandbox go on with the Python bootstrap and say why, instead of failing (the hub's install did)."""
+    _fresh(tmp_path, monkeypatch)
+    monkeypatch.setattr(launcher, "SOURCE", tmp_path / "missing" / "launcher.c")
+    assert launcher.ensure() is None and launcher.host_path() is None
+    assert "launcher.c is missing" in capsys.readouterr().err
+    assert "source" in launcher.status() and "Python bootstrap" in launcher.status()
+
+
+def test_the_source_is_package_data():
+    """The launcher's source ships with the package (a non-editable install, as the hub makes)."""
+    import tomllib
+    data = tomllib.loads((Path(launcher.__file__).parents[2] / "pyproject.toml").read_text())
+    assert "*.c" in data["tool"]["setuptools"]["package-data"]["grader.jail"]
+
+
 @needs_gcc
 @needs_jail
 def test_a_program_that_cannot_start_is_exit_127_with_both_starters(tmp_path, monkeypatch):
