@@ -103,8 +103,11 @@ def _broken_copy(tmp_path, edit) -> Problem:
      "read_input(write_input(args)) != args"),
     (lambda s: s.replace("return judge_io.write_index_rows(triangles)", "return judge_io.write_index_rows(triangles[1:])"),
      "read_output(write_output(answer))"),
-    (lambda s: s.replace("    return ok, message\n", "    return False, 'no'\n"), "reference answer is rejected"),
-    (lambda s: s.replace("    return ok, message\n", "    return int(ok), message\n"), "check must return (bool, message)"),
+    # check() accepts early (``return True, "ok"``) and ends with ``return ok, message``: both edited
+    (lambda s: s.replace("    return ok, message\n", "    return False, 'no'\n").replace('return True, "ok"', "return False, 'no'"),
+     "reference answer is rejected"),
+    (lambda s: s.replace("    return ok, message\n", "    return int(ok), message\n").replace('return True, "ok"', 'return 1, "ok"'),
+     "check must return (bool, message)"),
     (lambda s: s.replace("        ax.set_aspect(", "        1 / 0\n        ax.set_aspect("), "draw failed"),
     # issue 23's crash: isdigit() is true for '²', int('²') raises; 5000 digits exceed int()'s limit
     (lambda s: s.replace("    if announced is not None:\n", "    if first.isdigit():\n        announced = int(first)\n"
