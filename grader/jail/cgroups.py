@@ -192,14 +192,19 @@ class Group:
 
     def pids(self) -> list[int]:
         """The processes in the group now (host pids), from its first ``cgroup.procs``."""
+        held = self.held()
+        return [] if held is None else held
+
+    def held(self) -> list[int] | None:
+        """As :meth:`pids`, or None when the group's ``cgroup.procs`` cannot be read."""
         if not self.procs_files:
-            return []
+            return None
         if self._procs is None:
             self._procs = ControlFile(self.procs_files[0])
         try:
             return [int(x) for x in self._procs.read().split()]
         except (OSError, ValueError):
-            return []
+            return None
 
     def close(self) -> None:
         """Close the kept descriptors (subclasses also remove what they created)."""
@@ -428,6 +433,38 @@ class ProcTree(_ProcSum):
 def _make_dir(path: Path) -> Path:
     path.mkdir(exist_ok=True)
     return path
+
+
+def sandbox_group_name(uid: int) -> str:
+    """The accounting group of root's sandbox slot ``uid`` (one at a time: the slot is locked)."""
+    return f"grader-sandbox-{uid}"
+
+
+def existing_group_pids(name: str) -> list[int] | None:
+    """The processes in every hierarchy's group ``name`` as :func:`open_group` would make it
+    ([] where it does not exist), or None where that cannot be told: not root, no cgroup
+    hierarchy that :func:`open_group` would use, a group that cannot be read."""
+    if os.geteuid() != 0:
+        return None
+    try:
+        own, mounts = _own_groups(), _mounts()
+    except (OSError, ValueError):
+        return None
+    if all(c in mounts and c in own for c in ("cpuacct", "memory", "pids")):
+        dirs = [mounts[c] / own[c].lstrip("/") / name for c in ("cpuacct", "memory", "pids")]
+    elif "" in mounts and "" in own:
+        dirs = [mounts[""] / own[""].lstrip("/") / name]
+    else:
+        return None
+    pids: list[int] = []
+    for d in dirs:
+        try:
+            pids += [int(x) for x in _read(d / "cgroup.procs").split()]
+        except FileNotFoundError:
+            continue
+        except (OSError, ValueError):
+            return None
+    return pids
 
 
 def open_group(name: str, memory_mb: int, processes: int, uid: int | None) -> Group:
