@@ -191,20 +191,30 @@ class Group:
         return False
 
     def pids(self) -> list[int]:
-        """The processes in the group now (host pids), from its first ``cgroup.procs``."""
-        held = self.held()
-        return [] if held is None else held
-
-    def held(self) -> list[int] | None:
-        """As :meth:`pids`, or None when the group's ``cgroup.procs`` cannot be read."""
+        """The processes in the group now (host pids), from its first ``cgroup.procs`` (through
+        the kept descriptor: on cgroup v1 the kernel keeps the list an open file read for about
+        a second, so a process that joined since may be missing; :meth:`held` reads afresh)."""
         if not self.procs_files:
-            return None
+            return []
         if self._procs is None:
             self._procs = ControlFile(self.procs_files[0])
         try:
             return [int(x) for x in self._procs.read().split()]
         except (OSError, ValueError):
+            return []
+
+    def held(self) -> list[int] | None:
+        """Every process in the group now, read afresh from each ``cgroup.procs`` (a new open: the
+        list a kept descriptor gives can be a second old), or None when one cannot be read."""
+        if not self.procs_files:
             return None
+        pids: set[int] = set()
+        try:
+            for path in self.procs_files:
+                pids.update(int(x) for x in _read(Path(path)).split())
+        except (OSError, ValueError):
+            return None
+        return sorted(pids)
 
     def close(self) -> None:
         """Close the kept descriptors (subclasses also remove what they created)."""

@@ -566,9 +566,9 @@ class Sandbox:
 
     def _nothing_left(self) -> bool:
         """True when the uid sweep would find nothing: the kernel cgroup that holds the slot's
-        processes (none of them can leave it, not even one that hides its ``/proc`` entry from its
-        uid) lists none, and no process of the uid is alive or is our unreaped child. False where
-        there is no such cgroup (``proc-uid``) or it cannot be read: then the sweep runs."""
+        processes (none of them can leave it, whatever its ``/proc`` entry shows) lists none, read
+        afresh, and no process of the uid is alive or is our unreaped child. False where there is
+        no such cgroup (``proc-uid``) or it cannot be read: then the sweep runs."""
         assert self.uid is not None
         if self.group is not None:
             held = self.group.held() if self.group.mechanism.startswith("cgroup") else None
