@@ -1,12 +1,13 @@
 """Results store (SQLite): one row per (student, problem, submission, test), committed as it comes.
 
-An interrupted batch (even ``kill -9``) loses at most the test that was running; a rerun reads
-what is stored and judges only the rest. Class grading writes a submission's rows through
-:meth:`ResultStore.deferred_tests`: one transaction for the rows of tests finished within a second
-of each other, and one at the end of the submission, so a ``kill -9`` loses at most the running
-submission's tests finished since its last commit, never a finished submission (a commit a test
-cost 0.02 ms of CPU and 12 system calls, a tenth of a small test's whole round trip). WAL mode and a busy timeout
-let parallel workers write. Commits are not flushed to the disk one by one
+An interrupted batch (even ``kill -9``) loses only what it had not committed, and a rerun reads
+what is stored and judges only the rest: with :meth:`ResultStore.add_test` (a commit a row) the
+test that was running; class grading and the course's autograde write a submission's rows through
+:meth:`ResultStore.deferred_tests` (one transaction for the tests finished within a second of each
+other, and one at the end of the submission), so there a ``kill -9`` loses at most the running
+submission's tests finished since its last commit, never a finished submission (a commit a row
+cost 0.02 ms of CPU and 12 system calls, a tenth of a small test's whole round trip). WAL mode and
+a busy timeout let parallel workers write. Commits are not flushed to the disk one by one
 (``synchronous=NORMAL``: a committed row survives the grader's death, not a power cut; there the
 last rows are judged again by the rerun): an ``fsync`` a test cost 0.25 ms of CPU and 8 ms of
 wall time here, more than a small test itself.
