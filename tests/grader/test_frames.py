@@ -204,3 +204,45 @@ def test_a_frame_nobody_asked_for_is_a_write_on_the_channel(tiny_judge, tmp_path
     path.write_text(FORGE.format(frame=repr(GOOD)).replace("voronoi_cells(points, bbox)", "delaunay(points)"))
     t = tiny_judge.judge_path(path).tests[0]
     assert t.verdict == Verdict.PE and "wrote on the judge's channel" in t.message
+
+
+def test_corrupted_frames_are_refused_or_read_never_a_crash():
+    """500 random corruptions of a good frame (cut, changed characters, other widths and counts):
+    ``decode`` raises ValueError or gives consistent arrays, and ``from_arrays`` then answers or
+    raises ``PresentationError``: nothing else reaches the judge."""
+    _, args, expected = _big_test()
+    good = frames.frame_of(expected)
+    rng = random.Random(42)
+    alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/=*-_ \n\x00é"
+    outcomes = {"refused": 0, "read": 0}
+    for _ in range(500):
+        frame = dict(good)
+        key = rng.choice(["rows", "counts", "w", "both"])
+        for k in (["rows", "counts"] if key == "both" else [key]):
+            if k == "w":
+                frame["w"] = rng.choice([1, 2, 3, 4, 16, 17, -1, 2 ** 70, None, "2"])
+                continue
+            text = list(frame[k])
+            for _ in range(rng.randint(1, 4)):
+                at = rng.randrange(len(text) + 1)
+                op = rng.random()
+                if op < 0.3:
+                    del text[at:]                                     # cut
+                elif op < 0.7 and at < len(text):
+                    text[at] = rng.choice(alphabet)                  # a changed character
+                else:
+                    text[at:at] = rng.choices(alphabet, k=rng.randint(1, 12))
+            frame[k] = "".join(text)
+        try:
+            rows = frames.decode(frame)
+        except ValueError:
+            outcomes["refused"] += 1
+            continue
+        outcomes["read"] += 1
+        assert rows.rows.dtype.kind == "f" and rows.rows.ndim == 2
+        assert rows.counts is None or int(rows.counts.sum()) == len(rows.rows)
+        try:
+            CHK.check(args, CHK.from_arrays(rows, args), expected)
+        except CHK.PresentationError:
+            pass
+    assert outcomes["refused"] > 100 and outcomes["read"] > 10, outcomes
