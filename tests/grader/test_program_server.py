@@ -207,10 +207,12 @@ def test_a_server_that_dies_gives_a_verdict_and_a_fresh_jail(box):
     assert out.status == "crash" and "jail ended" in out.message, (out.status, out.message)
     assert run(box, "hello").value == "hello\n" and server(box) is not first
     # killed between two tests: the next test runs in a fresh jail, not judged on the dead one
-    for pid in children(server(box).pid):
+    second = server(box)
+    for pid in children(second.pid):
         os.kill(pid, signal.SIGKILL)
     time.sleep(0.1)
     assert run(box, "hello").value == "hello\n"
+    assert server(box) is not second
 
 
 def test_the_per_test_jail_is_kept_as_a_switch(probe, monkeypatch):
