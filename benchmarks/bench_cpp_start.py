@@ -30,7 +30,7 @@ import time
 from grader.jail import Limits, Sandbox, launcher
 from grader.judging.compile import compile_source
 from grader.judging.languages import CPP
-from grader.judging.runner import run_stdio
+from grader.judging.program_server import run_compiled
 
 PROGRAM = '#include <cstdio>\nint main(){int x; if(std::scanf("%d",&x)==1) std::printf("%d\\n",x); return 0;}\n'
 
@@ -45,12 +45,12 @@ def measure(binary: str, runs: int, starter: str) -> str:
     os.environ[launcher.LAUNCHER_ENV] = starter
     charged, walls = [], []
     with Sandbox(Limits(cpu_s=2, memory_mb=256), program=binary) as box:
-        run_stdio(box, "", "0\n", 2.0, [], program=True)  # first-time costs out of the way
+        run_compiled(box, "0\n", 2.0)  # first-time costs out of the way
         s0, c0 = _cpu(resource.RUSAGE_SELF), _cpu(resource.RUSAGE_CHILDREN)
         j0 = box.group.cpu_seconds() if box.group is not None and box.root_mode else 0.0
         for i in range(runs):
             t0 = time.monotonic()
-            out = run_stdio(box, "", f"{i}\n", 2.0, [], program=True)
+            out = run_compiled(box, f"{i}\n", 2.0)
             walls.append(time.monotonic() - t0)
             if out.status != "ok" or out.value.strip() != str(i):
                 raise SystemExit(f"run {i}: {out.status} {out.message} {out.value!r}")

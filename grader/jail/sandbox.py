@@ -313,10 +313,6 @@ class Sandbox:
             self._attached[name] = thing
         return self._attached.get(name)
 
-    def detach(self, name: str) -> None:
-        """Forget what was attached under ``name`` (it was closed by its owner)."""
-        self._attached.pop(name, None)
-
     def close(self) -> None:
         """Close what is attached, kill every process of the slot and delete its files (and its cgroup)."""
         for thing in list(self._attached.values()):

@@ -19,11 +19,11 @@ at all (no ``ready`` in time) sends the sandbox's remaining tests through the pe
 
 Nothing hidden goes to the jail: the test's input only; the answer is checked in the grader.
 
-Run: nothing to run; ``run_stdio(box, "", input, limit, [], program=True)`` uses it.
+Run: nothing to run; the judge runs a compiled submission's tests with :func:`run_compiled`.
 
 Example:
     >>> with Sandbox(Limits(cpu_s=2, memory_mb=256), program=binary, no_processes=True) as box:  # doctest: +SKIP
-    ...     run_stdio(box, "", "3\\n", 2.0, [], program=True).status
+    ...     run_compiled(box, "3\\n", 2.0).status
     'ok'
 """
 
@@ -36,11 +36,13 @@ import signal
 import socket
 import time
 from types import SimpleNamespace
+from typing import Sequence
 
 from ..jail import Sandbox, launcher, seccomp
 from ..jail.cgroups import ProcTree
-from .runner import (RunOutcome, _bad_alloc, _cpu_seconds, _peak_rss_mb, _reset_peak, _runqueue_seconds, _sample_s,
-                     _stdio_outcome, output_paths, sleep_limit_for, wall_limit_for)
+from .runner import (RunOutcome, _bad_alloc, _cpu_seconds, _memory_limit_hit, _peak_rss_mb, _reset_peak,
+                     _runqueue_seconds, _sample_s, _stdio_outcome, output_paths, run_stdio, sleep_limit_for,
+                     wall_limit_for)
 
 #: The name the server is attached under (:meth:`Sandbox.attach`).
 ATTACH_NAME = "program-server"
@@ -205,7 +207,6 @@ class ProgramServer:
 def _jail_died(box: Sandbox, time_s: float, mem: float) -> RunOutcome:
     """The server ended (or broke the protocol) during a test: MLE when the sandbox's memory limit
     was hit, else a run-time error; the next test gets a fresh jail."""
-    from .runner import _memory_limit_hit
     if _memory_limit_hit(box):
         return RunOutcome("memory", message="the program's processes together went over the memory limit",
                           time_s=time_s, memory_mb=max(mem, float(box.limits.memory_mb)))
@@ -222,8 +223,7 @@ def run_program(box: Sandbox, input_text: str, time_limit: float, idle_left: flo
         server = box.attach(ATTACH_NAME)
         if not isinstance(server, ProgramServer) or not server.alive or server.proc.poll() is not None:
             if isinstance(server, ProgramServer):
-                box.detach(ATTACH_NAME)
-                server.close()
+                server.close()  # replaced below
             server = ProgramServer(box)
             if not server.alive:
                 server.close()
@@ -234,3 +234,14 @@ def run_program(box: Sandbox, input_text: str, time_limit: float, idle_left: flo
         if outcome is not None:
             return outcome
     return None
+
+
+def run_compiled(box: Sandbox, input_text: str, time_limit: float, forbidden: Sequence[str] = (),
+                 filename: str = "submission.cpp", idle_left: float = float("inf")) -> RunOutcome:
+    """One test of ``box``'s compiled program (``Sandbox(program=...)``): in the sandbox's one jail
+    through its server where that can run (:func:`run_program`), else in a jail of its own
+    (:func:`grader.judging.runner.run_stdio`); the program's stdout is in ``.value``."""
+    served = run_program(box, input_text, time_limit, idle_left)
+    if served is not None:
+        return served
+    return run_stdio(box, "", input_text, time_limit, forbidden, filename=filename, idle_left=idle_left, program=True)

@@ -630,16 +630,11 @@ def run_stdio(box: Sandbox, source: str, input_text: str, time_limit: float, for
     """Run the submission once as a program with ``input_text`` on stdin; output in ``.value``.
     It is stopped once it has spent ``idle_left`` seconds of wall time not computing.
     ``program``: run the sandbox's compiled binary (``Sandbox(program=...)``) instead of ``source``;
-    its stack may grow up to the memory limit; it runs in the sandbox's one jail, started on its
-    first test (:mod:`grader.judging.program_server`), where that can run, else in a jail of its own."""
+    its stack may grow up to the memory limit; this runs it in a jail of its own (the judge runs a
+    compiled program's tests in one jail, :func:`grader.judging.program_server.run_compiled`)."""
     if idle_left <= 0:
         return RunOutcome("timeout", message="the submission's wall-time budget is used up (it spent it "
                                              "sleeping or blocked)", time_s=time_limit)
-    if program:  # one jail per submission, a fresh process per test (else, or if it cannot start: per test)
-        from .program_server import run_program
-        served = run_program(box, input_text, time_limit, idle_left)
-        if served is not None:
-            return served
     config = _child_config(box, "exec" if program else "stdio", "", forbidden, filename)
     if program:
         config.update(program=box.program_path, stack_bytes=box.limits.memory_mb << 20)

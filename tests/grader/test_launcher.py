@@ -25,7 +25,7 @@ from grader.jail import Limits, Sandbox, doctor, launcher
 from grader.jail.sandbox import jail_kind
 from grader.judging.compile import compile_source
 from grader.judging.languages import CPP
-from grader.judging.runner import run_stdio
+from grader.judging.program_server import run_compiled
 
 from . import ordinary_user
 
@@ -79,7 +79,7 @@ def probe(tmp_path_factory) -> str:
 def _started(binary: str, monkeypatch, starter: str) -> tuple[str, str | None]:
     monkeypatch.setenv(launcher.LAUNCHER_ENV, starter)
     with Sandbox(Limits(cpu_s=2, memory_mb=256), program=binary) as box:
-        out = run_stdio(box, "", "", 2.0, [], program=True)
+        out = run_compiled(box, "", 2.0)
         assert out.status == "ok", (out.status, out.message)
         return out.value, box.launcher
 
@@ -186,7 +186,7 @@ def test_a_program_that_cannot_start_is_exit_127_with_both_starters(tmp_path, mo
     for starter in ("c", "python"):
         monkeypatch.setenv(launcher.LAUNCHER_ENV, starter)
         with Sandbox(Limits(cpu_s=2, memory_mb=256), program=str(bad)) as box:
-            out = run_stdio(box, "", "", 2.0, [], program=True)
+            out = run_compiled(box, "", 2.0)
         assert "exited with code 127" in out.message, (starter, out.status, out.message)
 
 

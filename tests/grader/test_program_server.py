@@ -11,7 +11,7 @@ in one sandbox, test after test, as the judge runs a C++ submission's tests. Wha
 * the student's process cannot kill, stop or ptrace the server, nor open its memory or its
   descriptors; closing or writing the descriptor numbers the server uses changes nothing;
 * a test that times out, or a server that dies, gives a verdict, and the next test gets a fresh jail;
-* ``GRADER_LAUNCHER=per-test`` switches back to one jail per test.
+* ``GRADER_LAUNCHER=per-test`` switches back to one jail per test (``run_compiled`` then uses ``run_stdio``).
 
 As root, :func:`test_as_an_ordinary_account` runs this file again as an ordinary account.
 
@@ -34,7 +34,7 @@ from grader.jail.sandbox import jail_kind
 from grader.judging import program_server
 from grader.judging.compile import compile_source
 from grader.judging.languages import CPP
-from grader.judging.runner import run_stdio
+from grader.judging.program_server import run_compiled
 
 from . import ordinary_user
 
@@ -133,7 +133,7 @@ def box(probe, monkeypatch):
 
 
 def run(box: Sandbox, what: str, limit: float = 1.0):
-    return run_stdio(box, "", what + "\n", limit, [], program=True)
+    return run_compiled(box, what + "\n", limit)
 
 
 def server(box: Sandbox) -> program_server.ProgramServer:
