@@ -5,7 +5,7 @@ in one sandbox, test after test, as the judge runs a C++ submission's tests. Wha
 
 * nothing carries from one test to the next: files left in ``/tmp``, the working directory and
   ``/dev/shm`` are gone (a link is removed, never followed), memory is fresh (a new process), the
-  IPC objects that would outlive a process cannot be made;
+  IPC objects that would outlive a process cannot be made; a filled ``/tmp`` is still an MLE;
 * a background process cannot be started (the seccomp filter kills the test's process) and so
   cannot write into the next test's output;
 * the student's process cannot kill, stop or ptrace the server, nor open its memory or its
@@ -109,6 +109,17 @@ int main() {
         for (int fd = 3; fd < 10; ++fd) open("/dev/null", O_RDONLY);
         std::printf("fds\n"); return 0;
     }
+    if (w == "fill") {  // /tmp to the brim: its files are memory
+        static char block[1 << 16]; std::memset(block, 'x', sizeof block);
+        for (int i = 0; i < 64; ++i) {  // files of up to 4 MB (RLIMIT_FSIZE is the output limit)
+            std::string name = "/tmp/fill" + std::to_string(i);
+            FILE *f = std::fopen(name.c_str(), "w");
+            int n = 0;
+            while (f && n < 64 && std::fwrite(block, 1, sizeof block, f) == sizeof block) ++n;
+            if (!f || std::fclose(f) != 0 || n < 64) break;
+        }
+        std::printf("filled\n"); return 0;
+    }
     if (w == "spin") { volatile unsigned long x = 0; for (;;) ++x; }
     if (w == "sleep") { std::printf("sleeping\n"); std::fflush(stdout); sleep(3); std::printf("woke\n"); return 0; }
     return 1;
@@ -150,6 +161,12 @@ def test_files_left_by_a_test_are_gone_at_the_next(box):
     assert out.value == "absent absent absent absent absent present cwd=/tmp/work\nwork writable 1\n", out.value
     assert server(box) is first  # the same jail: emptied, not replaced
     assert os.path.exists(box.program or "")  # the link to the program was removed, not followed
+
+
+def test_a_filled_tmp_is_an_mle_and_is_emptied_for_the_next_test(box):
+    out = run(box, "fill")
+    assert out.status == "memory" and "/tmp" in out.message, (out.status, out.message)
+    assert run(box, "look").value.startswith("absent absent absent absent absent present")
 
 
 def test_memory_and_ipc_do_not_carry_between_tests(box):
