@@ -9,6 +9,9 @@ Every other call is allowed, except, with ``program(no_processes=True)`` (the no
 which has no cgroup to charge helpers to), new processes: ``fork``, ``vfork`` and ``clone``
 without ``CLONE_THREAD`` kill the process (``SIGSYS``, judged SV); threads still start; and
 ``shmget`` and ``memfd_create`` get ``EPERM`` (RAM outside RLIMIT_AS that no cgroup charges there).
+With ``program(shared_jail=True)`` (each test's process in a jail that outlives the test: a
+compiled submission's, whose C launcher installs it) the IPC objects that would outlive the
+process (``shmget``, ``semget``, ``msgget``, ``mq_open``) get ``EPERM`` too.
 Only x86-64 is supported; elsewhere :func:`program` returns None
 and the sandbox reports "no seccomp".
 

@@ -34,6 +34,7 @@ import re
 import select
 import signal
 import socket
+import subprocess
 import time
 from types import SimpleNamespace
 from typing import Sequence
@@ -55,6 +56,9 @@ _REPORT = re.compile(rb"done (exit|signal) (\d{1,3}) (\d{1,15}) (\d{1,15}) (\d{1
 
 class _Failed:
     """Attached instead of a server whose start failed: the sandbox's tests use the per-test jail."""
+
+    def __init__(self, why: str):
+        self.why = why  #: what went wrong (for a debugger; the tests are judged all the same)
 
     def close(self) -> None:
         """Nothing to close."""
@@ -224,10 +228,14 @@ def run_program(box: Sandbox, input_text: str, time_limit: float, idle_left: flo
         if not isinstance(server, ProgramServer) or not server.alive or server.proc.poll() is not None:
             if isinstance(server, ProgramServer):
                 server.close()  # replaced below
-            server = ProgramServer(box)
+            try:
+                server = ProgramServer(box)
+            except (OSError, ValueError, subprocess.SubprocessError) as exc:  # the jail could not start
+                box.attach(ATTACH_NAME, _Failed(f"{type(exc).__name__}: {exc}"))
+                return None
             if not server.alive:
                 server.close()
-                box.attach(ATTACH_NAME, _Failed())
+                box.attach(ATTACH_NAME, _Failed("no 'ready' from the server"))
                 return None
             box.attach(ATTACH_NAME, server)
         outcome = server.run(input_text, time_limit, idle_left)

@@ -11,6 +11,7 @@ in one sandbox, test after test, as the judge runs a C++ submission's tests. Wha
 * the student's process cannot kill, stop or ptrace the server, nor open its memory or its
   descriptors; closing or writing the descriptor numbers the server uses changes nothing;
 * a test that times out, or a server that dies, gives a verdict, and the next test gets a fresh jail;
+  a server that cannot start leaves the tests to a jail per test;
 * ``GRADER_LAUNCHER=per-test`` switches back to one jail per test (``run_compiled`` then uses ``run_stdio``).
 
 As root, :func:`test_as_an_ordinary_account` runs this file again as an ordinary account.
@@ -230,6 +231,15 @@ def test_a_server_that_dies_gives_a_verdict_and_a_fresh_jail(box):
     time.sleep(0.1)
     assert run(box, "hello").value == "hello\n"
     assert server(box) is not second
+
+
+def test_a_server_that_cannot_start_leaves_the_tests_to_the_per_test_jail(box, monkeypatch):
+    def broken(self, box):
+        raise OSError("no room for another jail")
+
+    monkeypatch.setattr(program_server.ProgramServer, "__init__", broken)
+    assert [run(box, "hello").value for _ in range(2)] == ["hello\n"] * 2
+    assert not program_server.usable(box)  # tried once per sandbox, not once per test
 
 
 def test_the_per_test_jail_is_kept_as_a_switch(probe, monkeypatch):
