@@ -13,10 +13,10 @@ reaped children per test (bubblewrap and the program when no cgroup catches them
 Run (as root or an ordinary account; the worktree's code via PYTHONPATH):
     PYTHONPATH=$PWD .venv/bin/python benchmarks/bench_cpp_start.py [--runs 30]
 
-Example output (as root, load 10):
-    python bootstrap: charged  46.8 ms/test (median), grader 6.4 ms, children 50.0 ms, jail 47.0 ms, wall 463 ms
-    C launcher:       charged  10.3 ms/test (median), grader 5.4 ms, children 12.3 ms, jail 10.9 ms, wall 165 ms
-    C server:         charged   1.0 ms/test (median), grader 1.1 ms, children  0.0 ms, jail  1.2 ms, wall   9 ms
+Example output (as root, load 5.4):
+    python bootstrap: charged  23.2 ms/test (median), grader 5.1 ms, children 25.6 ms, jail 22.4 ms, wall 109 ms
+    C launcher:       charged  11.5 ms/test (median), grader 5.0 ms, children 13.6 ms, jail 10.3 ms, wall 64 ms
+    C server:         charged   0.9 ms/test (median), grader 0.6 ms, children  0.0 ms, jail  1.0 ms, wall 6 ms
 """
 from __future__ import annotations
 
