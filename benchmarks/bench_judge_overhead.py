@@ -20,7 +20,9 @@ one comment line so no two are identical) is graded in ONE run of
 * ``own``: the student's own CPU, the sum of the tests' ``time_s`` read back from the results
   store (SQLite table ``results``). It includes the child's decoding of the arguments and
   encoding of the answer (the jail measures the call as a whole).
-* ``overhead = total - own``, ``ratio = overhead / own``, and wall time (noisy under load).
+* ``overhead = total - own`` (for a compiled language ``- compile``: the judge's compile is in
+  the student's total; the compile line's figure, measured outside the jail, is subtracted),
+  ``ratio = overhead / own``, and wall time (noisy under load).
 
 Where the overhead goes (per problem, a later student, i.e. the mean of students 2..n):
 
@@ -733,6 +735,11 @@ def main(argv: list[str] | None = None) -> dict[str, Any]:
                 else:
                     compile_cpu = None
                 run = grade_run(meter, pid, cdir, tmp / f"{pid}-{lang_name}.sqlite", a.jobs, lang_name)
+                if compile_cpu is not None:  # each student's compile is in their total, not in the overhead
+                    for r in run.students:
+                        if r.total is not None:
+                            r.overhead = r.total - r.own - compile_cpu
+                            r.ratio = r.overhead / r.own if r.own > 0 else None
                 run.extra = {"solution": str(sol.relative_to(REPO)), "compile": compile_cpu,
                              "replay": replay(pid, a.repeat), "imports": import_cost(meter, sol, a.repeat) if not lang.compile else 0.0}
                 runs.append(run)
@@ -749,8 +756,8 @@ def main(argv: list[str] | None = None) -> dict[str, Any]:
                      "verdict"], prow))
         compiled = [run for run in runs if run.extra["compile"] is not None]
         for run in compiled:
-            print(f"  compile {run.problem} ({run.lang}): {run.extra['compile']:.3f} CPU-s (outside the jail; "
-                  "not in the ratio)")
+            print(f"  compile {run.problem} ({run.lang}): {run.extra['compile']:.3f} CPU-s (the same command outside "
+                  "the jail; subtracted from each student's overhead, so not in the ratio)")
 
         print("\n== per grade run (CPU s): before the first student, student 1's extra, after the last ==")
         rrows = []

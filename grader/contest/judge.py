@@ -31,6 +31,7 @@ from ..judging.check_budget import CheckTimeout, check_seconds, cpu_budget
 from ..judging.frames import FloatRows
 from ..judging.compile import BINARY_NAME, COMPILE_LIMITS, COMPILE_WALL_S, CompileResult, build_dir, compile_source
 from ..problems import Problem, TestCase, load_problem
+from ..judging.program_server import run_compiled
 from ..judging.runner import FunctionWorker, RunOutcome, idle_budget_for, output_paths, run_stdio
 from ..jail import Limits, Sandbox
 from ..judging.submissions import Submission, SubmissionError
@@ -432,9 +433,12 @@ class Judge:
                 before = _file_size(worker.out_paths[0])
                 err_before = _file_size(err_path)
                 outcome = worker.call(args, time_limit, idle_left=idle_left, args_json=self._args_json(k))
+            elif program:  # one jail per submission, a fresh process per test
+                outcome = run_compiled(box, test.input_text, time_limit, self.problem.forbidden,
+                                       filename=sub.filename, idle_left=idle_left)
             else:
                 outcome = run_stdio(box, sub.source, test.input_text, time_limit, self.problem.forbidden,
-                                    filename=sub.filename, idle_left=idle_left, program=program)
+                                    filename=sub.filename, idle_left=idle_left)
             idle = outcome.idle_s
             r = TestResult(test.name, test.group, Verdict.JE, outcome.time_s, round(outcome.memory_mb, 1))
             if outcome.status == "ok":

@@ -645,7 +645,8 @@ def run_stdio(box: Sandbox, source: str, input_text: str, time_limit: float, for
     """Run the submission once as a program with ``input_text`` on stdin; output in ``.value``.
     It is stopped once it has spent ``idle_left`` seconds of wall time not computing.
     ``program``: run the sandbox's compiled binary (``Sandbox(program=...)``) instead of ``source``;
-    its stack may grow up to the memory limit."""
+    its stack may grow up to the memory limit; this runs it in a jail of its own (the judge runs a
+    compiled program's tests in one jail, :func:`grader.judging.program_server.run_compiled`)."""
     if idle_left <= 0:
         return RunOutcome("timeout", message="the submission's wall-time budget is used up (it spent it "
                                              "sleeping or blocked)", time_s=time_limit)
