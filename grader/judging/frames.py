@@ -1,12 +1,12 @@
 """Float answers as a binary frame: the parent's decoder of what the jailed child sends instead
 of a long JSON list of floats, for a problem whose checker asks for it (``from_arrays``).
 
-Parsing a JSON float costs the parent about a microsecond (``strtod`` and a Python float each); a
-``voronoi`` answer holds 1 000 of them per 100 points. When the judge starts a worker with
-``frames=True`` (:class:`grader.judging.runner.FunctionWorker`), the child sends a well-formed
-answer of floats (a list of rows of ``w`` floats, or a list of groups of such rows) as one JSON
-line whose numbers are a base64 string of little-endian float64 (and, for groups, of int64 row
-counts) instead of decimal text::
+Parsing a JSON float costs the parent about 0.6 microseconds (``strtod`` and a Python float
+each); a ``voronoi`` answer holds about 1 200 of them per 100 points, its 200 tests 180 000.
+When the judge starts a worker with ``frames=True`` (:class:`grader.judging.runner.FunctionWorker`),
+the child sends a well-formed answer of floats (a list of rows of ``w`` floats, or a list of
+groups of such rows) as one JSON line whose numbers are a base64 string of little-endian float64
+(and, for groups, of int64 row counts) instead of decimal text::
 
     {"id": 7, "frame": {"w": 2, "counts": "<base64 int64>", "rows": "<base64 float64>"}}
 
@@ -55,12 +55,6 @@ class FloatRows:
     def __len__(self) -> int:
         """The number of items of the answer: groups, or rows when there are no groups."""
         return len(self.rows) if self.counts is None else len(self.counts)
-
-    def starts(self):
-        """Where each group's rows start in ``rows`` (int64 array; groups only)."""
-        import numpy as np
-
-        return np.cumsum(self.counts) - self.counts
 
     def tolist(self) -> list:
         """The answer as the JSON-native value the child would have sent as JSON text."""
