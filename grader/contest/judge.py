@@ -28,6 +28,7 @@ from typing import Callable, Sequence
 
 from ..judging import hidden_feedback
 from ..judging.check_budget import CheckTimeout, check_seconds, cpu_budget
+from ..judging.frames import FloatRows
 from ..judging.compile import BINARY_NAME, COMPILE_LIMITS, COMPILE_WALL_S, CompileResult, build_dir, compile_source
 from ..problems import Problem, TestCase, load_problem
 from ..judging.program_server import run_compiled
@@ -324,7 +325,8 @@ class Judge:
             if mode == "function":
                 budget = self.problem.time_limit * len(self.tests) + 30
                 worker = FunctionWorker(box, sub.source, self.problem.entry, self.problem.forbidden,
-                                        filename=sub.filename, total_cpu_s=budget)
+                                        filename=sub.filename, total_cpu_s=budget,
+                                        frames=callable(getattr(self.problem.checker, "from_arrays", None)))
             try:
                 for k, test in enumerate(self.tests):
                     if test.name in prior:
@@ -358,13 +360,19 @@ class Judge:
 
     def _check(self, r: TestResult, value, args, expected, function_mode: bool) -> None:
         """Type-check and check one answer into ``r``, under a CPU budget of its own
-        (:mod:`grader.judging.check_budget`): a check that runs too long is ``TLE``, never a hung grader."""
+        (:mod:`grader.judging.check_budget`): a check that runs too long is ``TLE``, never a hung grader.
+        A binary frame (:class:`FloatRows`) goes to the checker's ``from_arrays``; a wrong answer's
+        ``received`` is the checker's reading of the same value as lists, as without frames."""
         chk = self.problem.checker
         budget = self.check_cpu_s
+        framed = function_mode and isinstance(value, FloatRows)
         try:
             with cpu_budget(budget):
                 try:
-                    answer = chk.from_result(value, args) if function_mode else chk.read_output(value, args)
+                    if framed:
+                        answer = chk.from_arrays(value, args)
+                    else:
+                        answer = chk.from_result(value, args) if function_mode else chk.read_output(value, args)
                 except chk.PresentationError as exc:
                     r.verdict, r.message = Verdict.PE, str(exc)
                     r.hidden_message = hidden_feedback.for_checker("PE", exc)
@@ -374,6 +382,8 @@ class Judge:
                     r.hidden_message = hidden_feedback.for_checker("WA", exc)
                     return
                 ok, message = chk.check(args, answer, expected)
+                if framed and not ok:
+                    answer = chk.from_result(value.tolist(), args)
         except CheckTimeout:
             r.verdict = Verdict.TLE
             r.message = (f"checking your answer took more than {budget:g} s of the grader's CPU time: the answer "
@@ -434,7 +444,8 @@ class Judge:
             if outcome.status == "ok":
                 self._check(r, outcome.value, args, expected, function_mode=worker is not None)
                 if r.verdict != Verdict.AC:
-                    r.answer = self._answer_text(outcome.value, r.received, function_mode=worker is not None)
+                    value = outcome.value.tolist() if isinstance(outcome.value, FloatRows) else outcome.value
+                    r.answer = self._answer_text(value, r.received, function_mode=worker is not None)
             else:
                 r.verdict, r.message = _verdict_for(outcome)
                 r.hidden_message = hidden_feedback.for_run(str(r.verdict), outcome.message, outcome.where,
