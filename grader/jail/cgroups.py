@@ -40,7 +40,7 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-from .procs import descendants, parent, uid_processes
+from .procs import alive, descendants, parent, uid_processes
 
 CGROUP_ROOT = Path("/sys/fs/cgroup")
 CLK_TCK = os.sysconf("SC_CLK_TCK")
@@ -475,6 +475,22 @@ def existing_group_pids(name: str) -> list[int] | None:
         except (OSError, ValueError):
             return None
     return pids
+
+
+def nothing_left(group: Group | None, uid: int) -> bool:
+    """True when a sweep of root's sandbox uid ``uid`` would find nothing: the kernel cgroup that
+    holds the slot's processes (``group``, or before it is opened the one a crashed grader would
+    have left; none of them can leave it, whatever its ``/proc`` entry shows) lists none, read
+    afresh, and no process of the uid is alive or is our unreaped child. False where there is no
+    such cgroup (``proc-uid``) or it cannot be read: then the sweep runs."""
+    if group is not None:
+        held = group.held() if group.mechanism.startswith("cgroup") else None
+    else:
+        held = existing_group_pids(sandbox_group_name(uid))
+    if held is None or held:
+        return False
+    me = os.getpid()
+    return not any(alive(p) or parent(p) == me for p in uid_processes(uid))
 
 
 def open_group(name: str, memory_mb: int, processes: int, uid: int | None) -> Group:

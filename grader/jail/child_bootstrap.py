@@ -91,13 +91,12 @@ if CONFIG.get("site_paths") is not None:  # started with -S: the parent named th
     import _sitebuiltins  # the builtins ``site`` would give (exit, quit, help, copyright...), made as it makes them
     import builtins
 
-    builtins.quit = _sitebuiltins.Quitter("quit", "Ctrl-D (i.e. EOF)")
-    builtins.exit = _sitebuiltins.Quitter("exit", "Ctrl-D (i.e. EOF)")
+    _eof, _here = "Ctrl-D (i.e. EOF)", getattr(sys, "_stdlib_dir", None) or os.path.dirname(os.__file__)
+    builtins.quit, builtins.exit = _sitebuiltins.Quitter("quit", _eof), _sitebuiltins.Quitter("exit", _eof)
     builtins.copyright = _sitebuiltins._Printer("copyright", sys.copyright)
-    builtins.credits = _sitebuiltins._Printer("credits", "Thanks to CWI, CNRI, BeOpen.com, Zope Corporation and a "
-                                              "cast of thousands\n    for supporting Python development.  See "
-                                              "www.python.org for more information.")
-    _here = getattr(sys, "_stdlib_dir", None) or os.path.dirname(os.__file__)
+    builtins.credits = _sitebuiltins._Printer("credits", "Thanks to CWI, CNRI, BeOpen.com, Zope Corporation and a cast of "
+                                              "thousands\n    for supporting Python development.  See www.python.org "
+                                              "for more information.")
     builtins.license = _sitebuiltins._Printer("license", "See https://www.python.org/psf/license/",
                                               ["LICENSE.txt", "LICENSE"], [os.path.join(_here, os.pardir), _here, os.curdir])
     builtins.help = _sitebuiltins._Helper()
@@ -474,9 +473,8 @@ def _load(source, as_main):
 
 
 def _read_lines(fd):
-    """The lines on ``fd``, read 64 KiB at a time (a pipe's capacity: a larger buffer would only
-    cost an ``mmap`` and ``munmap`` a read); they gather in a ``bytearray``, so a large line costs
-    linear time, not a copy of everything before it per read."""
+    """The lines on ``fd``, read 64 KiB (a pipe's capacity; more costs an ``mmap`` a read) at a time
+    into a ``bytearray``: a long line costs linear time, not a copy of all before it per read."""
     buf = bytearray()
     while True:
         chunk = os.read(fd, 1 << 16)

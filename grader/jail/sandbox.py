@@ -570,7 +570,7 @@ class Sandbox:
         (reaped), so the next run starts with a clean RLIMIT_NPROC count."""
         if self.uid is None:
             return
-        if self._nothing_left():  # the common case after a run: no fork to kill nothing
+        if cgroups.nothing_left(self.group, self.uid):  # the common case after a run: no fork to kill nothing
             self._swept = True
             return
         deadline = time.monotonic() + wait_s
@@ -584,21 +584,6 @@ class Sandbox:
                 self._swept = not left
                 return
             time.sleep(0.01)
-
-    def _nothing_left(self) -> bool:
-        """True when the uid sweep would find nothing: the kernel cgroup that holds the slot's
-        processes (none of them can leave it, whatever its ``/proc`` entry shows) lists none, read
-        afresh, and no process of the uid is alive or is our unreaped child. False where there is
-        no such cgroup (``proc-uid``) or it cannot be read: then the sweep runs."""
-        assert self.uid is not None
-        if self.group is not None:
-            held = self.group.held() if self.group.mechanism.startswith("cgroup") else None
-        else:  # before the slot's group is opened: a crashed grader's leftovers would be in it
-            held = cgroups.existing_group_pids(cgroups.sandbox_group_name(self.uid))
-        if held is None or held:
-            return False
-        me = os.getpid()
-        return not any(alive(p) or parent(p) == me for p in uid_processes(self.uid))
 
     def _kill_uid(self) -> None:
         pid = os.fork()

@@ -377,7 +377,7 @@ def test_the_uid_sweep_still_kills_what_the_group_does_not_hold(tmp_path):
     with Sandbox(Limits(cpu_s=5, memory_mb=256)) as box:
         assert box.group is not None and box.group.mechanism.startswith("cgroup"), box.group.mechanism
         uid = box.uid
-        assert box._nothing_left()
+        assert cgroups.nothing_left(box.group, uid)
         first = os.fork()
         if first == 0:  # pragma: no cover - child: a grandchild of the uid, not ours, not in the group
             try:
@@ -391,9 +391,9 @@ def test_the_uid_sweep_still_kills_what_the_group_does_not_hold(tmp_path):
         os.waitpid(first, 0)
         assert _wait_for(lambda: any(alive(p) for p in uid_processes(uid)))
         stray = [p for p in uid_processes(uid) if alive(p)]
-        assert not box._nothing_left()
+        assert not cgroups.nothing_left(box.group, uid)
         box.kill_all()
-        assert not any(alive(p) for p in stray) and box._nothing_left()
+        assert not any(alive(p) for p in stray) and cgroups.nothing_left(box.group, uid)
 
         code = "import ctypes, time; ctypes.CDLL(None).prctl(4, 0, 0, 0, 0); print('hidden', flush=True); time.sleep(60)"
         out = tmp_path / "out.txt"
@@ -402,8 +402,8 @@ def test_the_uid_sweep_still_kills_what_the_group_does_not_hold(tmp_path):
         assert _wait_for(lambda: "hidden" in out.read_text()), out.read_text()
         held = box.group.held()
         assert held and all(alive(p) for p in held), "the jailed processes are in the sandbox's group"
-        assert not box._nothing_left()
+        assert not cgroups.nothing_left(box.group, uid)
         box.terminate(proc.pid)
         proc.wait(timeout=10)
         box.kill_all()
-        assert box._nothing_left() and not any(alive(p) for p in held)
+        assert cgroups.nothing_left(box.group, uid) and not any(alive(p) for p in held)
