@@ -409,7 +409,7 @@ def _delaunay_accepts_bulk(bulk, P, F, rep, n_distinct, hull_edges, arrays, rows
     most signs at once (``bulk``), integers the rest; edges matched by sorting their keys."""
     np = bulk.np
     n = len(P)
-    if not arrays:
+    if "hull" not in arrays:  # (flip_replay may have cached x and y alone)
         xy = np.array(F, dtype=np.float64).reshape(-1, 2)
         arrays.update(x=xy[:, 0].copy(), y=xy[:, 1].copy(), rep=np.array(rep, dtype=np.int64),
                       hull=np.sort(np.array([u * n + v for u, v in hull_edges], dtype=np.int64)))
