@@ -152,11 +152,12 @@ def accepts(points, triangles, flips, verify, bulk=None) -> bool:
     kernel = compiled_kernel() if numpy and len(flips) >= COMPILED_MIN_FLIPS else None
     if kernel is not None:
         np = bulk.np
+        pairs = np.array(flat, dtype=np.int64).reshape(-1, 2)
         ok, cs, ds, final = kernel.replay(n, np.fromiter(chain.from_iterable(rows), np.int64, 3 * len(rows)).reshape(-1, 3),
-                                          np.array(flat, dtype=np.int64).reshape(-1, 2))
+                                          pairs)
         if not ok:
             return False
-        A, B, final = np.array(flat[0::2], dtype=np.int64), np.array(flat[1::2], dtype=np.int64), final.tolist()
+        A, B = pairs[:, 0], pairs[:, 1]      # final: an int64 array, which check_delaunay's numpy pass takes as is
     else:
         replayed = topology(n, rows, flips)
         if replayed is None:
@@ -169,6 +170,6 @@ def accepts(points, triangles, flips, verify, bulk=None) -> bool:
         if not _all_positive_bulk(bulk, verify, P, F, arrays, A, B, cs, ds):
             return False
     elif not all(incircle(a, b, c, d) > 0 and orient(c, d, b) > 0 and orient(d, c, a) > 0
-                 for a, b, c, d in zip(A, B, cs, ds)):
+                 for a, b, c, d in zip(*(v if type(v) is list else v.tolist() for v in (A, B, cs, ds)))):
         return False
     return verify.check_delaunay(points, final, bulk)[0]
