@@ -174,12 +174,14 @@ REFLEX = [[[0.0, 0.0], [4.0, 0.0], [-1.0, 1.0], [-1.0, -1.0], [-3.0, 0.0]],
           [[0, 1, 2], [1, 0, 3], [0, 2, 4], [0, 4, 3]]]
 
 
-@pytest.mark.parametrize("case", [{"kind": "uniform", "n": 120}, {"kind": "grid", "n": 64, "w": 8, "h": 8},
-                                  {"kind": "duplicates", "n": 60, "repeats": 12}, {"kind": "circle", "n": 50},
-                                  {"kind": "strip", "n": 40}])
-def test_checker_verdicts_and_messages_are_the_same(case, monkeypatch):
+@pytest.mark.parametrize("case,scale", [({"kind": "uniform", "n": 120}, 1.0), ({"kind": "grid", "n": 64, "w": 8, "h": 8}, 1.0),
+                                        ({"kind": "duplicates", "n": 60, "repeats": 12}, 1.0),
+                                        ({"kind": "circle", "n": 50}, 1.0), ({"kind": "strip", "n": 40}, 1.0),
+                                        ({"kind": "uniform", "n": 40}, 2.0 ** -160)])   # untame: integer predicates
+def test_checker_verdicts_and_messages_are_the_same(case, scale, monkeypatch):
     rng = random.Random(3)
     points, triangles = GEN.generate_args(case, 2)
+    points = [[x * scale, y * scale] for x, y in points]
     flips = [list(f) for f in flip_to_delaunay(points, triangles)]
     assert flips
     calls = []
@@ -190,6 +192,10 @@ def test_checker_verdicts_and_messages_are_the_same(case, monkeypatch):
         assert with_kernel == _check(monkeypatch, [points, triangles], answer, False), (case, answer[-3:])
         if answer is flips:
             assert with_kernel == (True, "ok")
+            with monkeypatch.context() as m:          # and the fast pass itself accepts (else it saves nothing)
+                m.setattr(CHK.flip_replay, "COMPILED_MIN_FLIPS", 0)
+                m.setattr(CHK.flip_replay, "_KERNEL", [flip_kernel])
+                assert CHK.flip_replay.accepts(points, triangles, flips, CHK.verify, CHK.bulk)
     assert calls                                       # the compiled path was taken
 
 
@@ -214,6 +220,7 @@ def test_a_long_answer_takes_the_compiled_path(monkeypatch):
     monkeypatch.setattr(flip_kernel, "replay", lambda *a: calls.append(1) or real(*a))
     monkeypatch.setattr(CHK.flip_replay, "_KERNEL", [flip_kernel])
     assert CHK.check([points, triangles], flips, None) == (True, "ok") and calls
+    assert CHK.flip_replay.accepts(points, triangles, flips, CHK.verify, CHK.bulk)
     bad = flips[:100] + [flips[99]] + flips[100:]
     assert CHK.check([points, triangles], bad, None) == _check(monkeypatch, [points, triangles], bad, False)
     assert "flip 100 = " in CHK.check([points, triangles], bad, None)[1]
