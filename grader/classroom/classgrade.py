@@ -193,7 +193,8 @@ def _judge_for(problem: str, hide: tuple[str, ...], per_thread: bool = False) ->
 
 def grade_local(problem: str, job: Job, db_path: str, hide: tuple[str, ...], report_dir: str | None,
                 builds: str | None = None) -> dict:
-    """Worker side: judge one student's file, committing each test result to the store. ``builds``:
+    """Worker side: judge one student's file, committing its test results to the store as they
+    come (at least once a second: :meth:`ResultStore.deferred_tests`). ``builds``:
     the grader's private folder where a compiled submission that failed a group with WA, PE or RE
     leaves its binary for its counterexample search (one compile per submission)."""
     store = ResultStore(db_path)
@@ -202,8 +203,8 @@ def grade_local(problem: str, job: Job, db_path: str, hide: tuple[str, ...], rep
         store.begin(job.student, problem, job.path, job.sha, job.submitted_at, job.groups)
         prior = store.prior(job.student, problem, job.sha)
         judge.keep_build, judge.build_store = builds is not None, builds
-        result = judge.judge_path(job.path, on_test=lambda r: store.add_test(job.student, problem, job.sha, r),
-                                  prior=prior)
+        with store.deferred_tests(job.student, problem, job.sha) as add:  # a commit a second, not a test
+            result = judge.judge_path(job.path, on_test=add, prior=prior)
         if builds is not None:
             from ..contest.counterexample import failing_groups
 

@@ -181,7 +181,8 @@ def judge_notebook_file(problem_id: str, path: Path, student: str, store_path: P
                 done.counterexamples, done.extra["counterexample_search"] = stored
             return done
         judge = _judge(problem, [*hide, str(path.resolve().parent), str(store_path.resolve().parent)])
-        result = judge.judge_path(path, on_test=lambda r: store.add_test(student, problem.id, key, r), prior=prior)
+        with store.deferred_tests(student, problem.id, key) as add:  # a commit a second, not a test
+            result = judge.judge_path(path, on_test=add, prior=prior)
         store.finish(student, problem.id, key, result)
         return result
     finally:

@@ -40,7 +40,7 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-from .procs import descendants, parent, uid_processes
+from .procs import alive, descendants, parent, uid_processes
 
 CGROUP_ROOT = Path("/sys/fs/cgroup")
 CLK_TCK = os.sysconf("SC_CLK_TCK")
@@ -191,7 +191,9 @@ class Group:
         return False
 
     def pids(self) -> list[int]:
-        """The processes in the group now (host pids), from its first ``cgroup.procs``."""
+        """The processes in the group now (host pids), from its first ``cgroup.procs`` (through
+        the kept descriptor: on cgroup v1 the kernel keeps the list an open file read for about
+        a second, so a process that joined since may be missing; :meth:`held` reads afresh)."""
         if not self.procs_files:
             return []
         if self._procs is None:
@@ -200,6 +202,19 @@ class Group:
             return [int(x) for x in self._procs.read().split()]
         except (OSError, ValueError):
             return []
+
+    def held(self) -> list[int] | None:
+        """Every process in the group now, read afresh from each ``cgroup.procs`` (a new open: the
+        list a kept descriptor gives can be a second old), or None when one cannot be read."""
+        if not self.procs_files:
+            return None
+        pids: set[int] = set()
+        try:
+            for path in self.procs_files:
+                pids.update(int(x) for x in _read(Path(path)).split())
+        except (OSError, ValueError):
+            return None
+        return sorted(pids)
 
     def close(self) -> None:
         """Close the kept descriptors (subclasses also remove what they created)."""
@@ -428,6 +443,54 @@ class ProcTree(_ProcSum):
 def _make_dir(path: Path) -> Path:
     path.mkdir(exist_ok=True)
     return path
+
+
+def sandbox_group_name(uid: int) -> str:
+    """The accounting group of root's sandbox slot ``uid`` (one at a time: the slot is locked)."""
+    return f"grader-sandbox-{uid}"
+
+
+def existing_group_pids(name: str) -> list[int] | None:
+    """The processes in every hierarchy's group ``name`` as :func:`open_group` would make it
+    ([] where it does not exist), or None where that cannot be told: not root, no cgroup
+    hierarchy that :func:`open_group` would use, a group that cannot be read."""
+    if os.geteuid() != 0:
+        return None
+    try:
+        own, mounts = _own_groups(), _mounts()
+    except (OSError, ValueError):
+        return None
+    if all(c in mounts and c in own for c in ("cpuacct", "memory", "pids")):
+        dirs = [mounts[c] / own[c].lstrip("/") / name for c in ("cpuacct", "memory", "pids")]
+    elif "" in mounts and "" in own:
+        dirs = [mounts[""] / own[""].lstrip("/") / name]
+    else:
+        return None
+    pids: list[int] = []
+    for d in dirs:
+        try:
+            pids += [int(x) for x in _read(d / "cgroup.procs").split()]
+        except FileNotFoundError:
+            continue
+        except (OSError, ValueError):
+            return None
+    return pids
+
+
+def nothing_left(group: Group | None, uid: int) -> bool:
+    """True when a sweep of root's sandbox uid ``uid`` would find nothing: the kernel cgroup that
+    holds the slot's processes (``group``, or before it is opened the one a crashed grader would
+    have left; none of them can leave it, whatever its ``/proc`` entry shows) lists none, read
+    afresh, and no process of the uid is alive or is our unreaped child. False where there is no
+    such cgroup (``proc-uid``) or it cannot be read: then the sweep runs."""
+    if group is not None:
+        held = group.held() if group.mechanism.startswith("cgroup") else None
+    else:
+        held = existing_group_pids(sandbox_group_name(uid))
+    if held is None or held:
+        return False
+    me = os.getpid()
+    return not any(alive(p) or parent(p) == me for p in uid_processes(uid))
 
 
 def open_group(name: str, memory_mb: int, processes: int, uid: int | None) -> Group:

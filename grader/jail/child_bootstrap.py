@@ -7,7 +7,8 @@ pipe; ``LOADER`` (:data:`grader.judging.runner.LOADER`) only reads and runs it. 
 Standard library only, and never imported by the grader itself. Its start-up imports only what
 the interpreter has loaded already and the C half of ``json`` (``_json``): the ``json`` package,
 ``traceback`` and ``linecache`` all import ``re``, which alone cost more CPU than the bare
-interpreter's start; they are imported when an error or a violation needs them. It
+interpreter's start; they are imported when an error or a violation needs them (``select`` only
+in stdio mode; ``site``'s builtins come from ``_sitebuiltins``, as ``site`` makes them). It
 
 1. installs an audit hook (PEP 578) that reports forbidden imports and operations (creating
    processes, signalling other processes, sockets, reading or listing files outside the Python
@@ -44,9 +45,7 @@ Example (what the parent runs, LOADER reading this program from fd 5 first):
 
 import _json
 import os
-import select
 import sys
-import types
 
 
 class _ScanContext:
@@ -89,11 +88,20 @@ def _loads(text):
 CONFIG = _loads(sys.argv[1])
 if CONFIG.get("site_paths") is not None:  # started with -S: the parent named the site-packages directories
     sys.path.extend(p for p in CONFIG["site_paths"] if p not in sys.path)
-    import site  # with -S importing it adds no path; it gives the builtins that site would (exit, quit, help)
+    import _sitebuiltins  # the builtins ``site`` would give (exit, quit, help, copyright...), made as it makes them
+    import builtins
 
-    site.setquit()
-    site.setcopyright()
-    site.sethelper()
+    _eof, _here = "Ctrl-D (i.e. EOF)", getattr(sys, "_stdlib_dir", None) or os.path.dirname(os.__file__)
+    builtins.quit, builtins.exit = _sitebuiltins.Quitter("quit", _eof), _sitebuiltins.Quitter("exit", _eof)
+    builtins.copyright = _sitebuiltins._Printer("copyright", sys.copyright)
+    builtins.credits = _sitebuiltins._Printer("credits", "Thanks to CWI, CNRI, BeOpen.com, Zope Corporation and a cast of "
+                                              "thousands\n    for supporting Python development.  See www.python.org "
+                                              "for more information.")
+    builtins.license = _sitebuiltins._Printer("license", "See https://www.python.org/psf/license/",
+                                              ["LICENSE.txt", "LICENSE"], [os.path.join(_here, os.pardir), _here, os.curdir])
+    builtins.help = _sitebuiltins._Helper()
+if CONFIG["mode"] == "stdio":  # imported before the submission runs (it may break imports); only a program waits
+    import select
 CTL_IN, CTL_OUT = CONFIG["ctl_in"], CONFIG["ctl_out"]
 FORBIDDEN = tuple(CONFIG["forbidden"])
 #: compiled engine module -> engine name ("matplotlib._qhull" -> "Qhull"): forbidden whoever imports it
@@ -248,7 +256,7 @@ def _guard_extension_loading():
     _imp.create_dynamic = create_dynamic
 
 
-class _EngineStandIn(types.ModuleType):
+class _EngineStandIn(type(sys)):  # a module (types.ModuleType)
     """What a library gets for a forbidden engine (``from ._qhull import *`` in scipy.spatial):
     every name is a class whose use (call, instantiation) is a violation naming the student's line."""
 
@@ -453,7 +461,7 @@ class _SourceLoader:
 
 def _load(source, as_main):
     name = "__main__" if as_main else "submission"
-    module = types.ModuleType(name)
+    module = type(sys)(name)  # types.ModuleType
     module.__file__ = SUBMISSION_FILE
     module.__builtins__ = __builtins__
     sys.modules[name] = module
@@ -465,17 +473,24 @@ def _load(source, as_main):
 
 
 def _read_lines(fd):
-    buf = b""
+    """The lines on ``fd``, read 64 KiB (a pipe's capacity; more costs an ``mmap`` a read) at a time
+    into a ``bytearray``: a long line costs linear time, not a copy of all before it per read."""
+    buf = bytearray()
     while True:
-        chunk = os.read(fd, 1 << 20)
+        chunk = os.read(fd, 1 << 16)
         if not chunk:
             if buf:
-                yield buf
+                yield bytes(buf)
             return
+        nl = chunk.find(b"\n")
+        if nl >= 0:
+            nl += len(buf)
         buf += chunk
-        while b"\n" in buf:
-            line, buf = buf.split(b"\n", 1)
+        while nl >= 0:
+            line = bytes(buf[:nl])
+            del buf[:nl + 1]
             yield line
+            nl = buf.find(b"\n")
 
 
 def main():

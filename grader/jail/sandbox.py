@@ -264,7 +264,7 @@ class Sandbox:
                 raise
             self._make_scratch()
             extra = BWRAP_PROCESSES if self.kind == "bwrap" else 0
-            self.group = cgroups.open_group(f"grader-sandbox-{self.uid}", self.limits.memory_mb,
+            self.group = cgroups.open_group(cgroups.sandbox_group_name(self.uid), self.limits.memory_mb,
                                             self.limits.processes + extra, self.uid)
             self._plan = self._make_plan()
             parts = [self.kind, self.group.mechanism] + (["seccomp"] if self._plan.seccomp else [])
@@ -569,6 +569,9 @@ class Sandbox:
         """SIGKILL every process of this slot's uid (root mode) and wait until all are gone
         (reaped), so the next run starts with a clean RLIMIT_NPROC count."""
         if self.uid is None:
+            return
+        if cgroups.nothing_left(self.group, self.uid):  # the common case after a run: no fork to kill nothing
+            self._swept = True
             return
         deadline = time.monotonic() + wait_s
         me = os.getpid()

@@ -268,6 +268,19 @@ class _Child:
             self.line_budget += 1
         line = json.dumps(obj, allow_nan=True, separators=(",", ":"))  # + args encoded by the judge, once a test
         self.pending += (line if args_json is None else f'{line[:-1]},"args":{args_json}}}').encode() + b"\n"
+        self._write()  # at once, as far as the pipe takes it: a small request needs no poll for room
+
+    def _write(self) -> None:
+        """Write what is pending on the control pipe, as much as it takes without blocking."""
+        if self.ctl_in < 0:
+            return
+        try:
+            n = os.write(self.ctl_in, self.pending[: 1 << 16])
+            self.pending = self.pending[n:]
+        except BlockingIOError:
+            pass
+        except OSError:  # child closed its end
+            self.pending = b""
 
     def wait_reply(self, deadline: float, want: str | None = None) -> dict | None:
         """Pump I/O until a reply (with key ``want`` or any key if None) arrives, the child ends,
@@ -293,13 +306,7 @@ class _Child:
                 poller.register(self.pidfd, select.POLLIN)
             for fd, ev in poller.poll(max(1, int(left * 1000))):
                 if fd == self.ctl_in:
-                    try:
-                        n = os.write(self.ctl_in, self.pending[: 1 << 16])
-                        self.pending = self.pending[n:]
-                    except BlockingIOError:
-                        pass
-                    except OSError:  # child closed its end
-                        self.pending = b""
+                    self._write()
                 elif fd == self.ctl_out:
                     self._read()
                 elif fd == self.pidfd:
@@ -310,7 +317,7 @@ class _Child:
         if self.ctl_out < 0:
             return
         try:
-            chunk = os.read(self.ctl_out, 1 << 20)
+            chunk = os.read(self.ctl_out, 1 << 16)  # a pipe's capacity: more would cost an mmap a read
         except BlockingIOError:
             return
         if not chunk:

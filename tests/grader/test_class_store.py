@@ -127,3 +127,43 @@ def test_submission_times_are_the_graders_not_the_files(tmp_path, problems):
     grade_class("tiny-delaunay", root, db, progress=False)
     subs = [s for s in ResultStore(db).submissions() if s["student"] == "mallory"]
     assert [s["verdict"] for s in subs] == ["AC", "WA"]  # in the order the grader saw them
+
+
+def test_deferred_tests_commit_together_and_on_error(tmp_path, monkeypatch):
+    """Class grading's rows: none visible to another connection until a commit, one commit for the
+    tests finished within ``every_s`` of the first pending one, the rest at the end of the block,
+    also when the block ends by an exception (those tests were finished)."""
+    from grader.classroom import store as store_module
+    from grader.judging.verdicts import TestResult, Verdict
+
+    clock = [100.0]
+    monkeypatch.setattr(store_module.time, "monotonic", lambda: clock[0])
+    db = tmp_path / "r.sqlite"
+    store = ResultStore(db)
+    other = sqlite3.connect(db)
+
+    def seen() -> int:
+        return other.execute("SELECT COUNT(*) FROM results WHERE student='ada'").fetchone()[0]
+
+    with store.deferred_tests("ada", "p", "s1", every_s=1.0) as add:
+        add(TestResult("g/1", "g", Verdict.AC))
+        clock[0] += 0.5
+        add(TestResult("g/2", "g", Verdict.WA, message="wrong"))
+        assert seen() == 0  # within a second of the first pending row: not written yet
+        clock[0] += 0.6
+        add(TestResult("g/3", "g", Verdict.AC))
+        assert seen() == 3  # a second after the first pending row: all three in one commit
+        add(TestResult("g/4", "g", Verdict.AC))
+        assert seen() == 3
+    assert seen() == 4
+    with pytest.raises(RuntimeError):
+        with store.deferred_tests("ada", "p", "s2") as add:
+            add(TestResult("h/1", "h", Verdict.AC))
+            raise RuntimeError("the judge stopped")
+    assert other.execute("SELECT test FROM results WHERE sha='s2'").fetchall() == [("h/1",)]
+    assert store.prior("ada", "p", "s1")["g/2"].verdict == Verdict.WA
+    with pytest.raises(ValueError, match="every_s"):
+        with store.deferred_tests("ada", "p", "s3", every_s=-1):
+            pass
+    other.close()
+    store.close()

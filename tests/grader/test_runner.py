@@ -106,3 +106,30 @@ def test_busy_machine_is_not_idle_time():
         out = w.call([2_000_000], time_limit=5, idle_left=0.5)
         assert out.status == "ok", out
         w.stop()
+
+
+def test_the_child_has_sites_builtins_and_reads_large_and_many_requests():
+    """The child starts without ``site`` (``-S``) but gives a submission the builtins ``site``
+    would (``exit`` and ``quit`` end a test like ``sys.exit``; ``help``, ``copyright``, ``credits``,
+    ``license`` exist); requests larger than a pipe's 64 KiB and many small ones in a row arrive whole."""
+    src = ("import builtins\n"
+           "def f(kind, data):\n"
+           "    if kind in ('exit', 'quit'):\n"
+           "        getattr(builtins, kind)(3)\n"
+           "    if kind == 'names':\n"
+           "        return [n for n in ('help', 'copyright', 'credits', 'license', 'exit', 'quit')"
+           " if callable(getattr(builtins, n, None))]\n"
+           "    return [len(data), sum(data)]\n")
+    with Sandbox(Limits(memory_mb=512)) as box:
+        w = FunctionWorker(box, src, "f", forbidden=[])
+        names = w.call(["names", []], time_limit=2)
+        assert names.status == "ok" and names.value == ["help", "copyright", "credits", "license", "exit", "quit"]
+        for kind in ("exit", "quit"):
+            ended = w.call([kind, []], time_limit=2)
+            assert ended.status == "error" and "sys.exit(3)" in ended.message, ended
+        big = list(range(100_000))  # about 600 KB of JSON: many pipe-fulls
+        assert w.call(["sum", big], time_limit=5).value == [len(big), sum(big)]
+        for k in range(50):
+            assert w.call(["sum", [k, 1]], time_limit=2).value == [2, k + 1]
+        assert w.starts == 1
+        w.stop()

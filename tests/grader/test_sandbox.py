@@ -10,6 +10,7 @@ import json
 import os
 import shutil
 import threading
+import time
 from pathlib import Path
 
 import pytest
@@ -354,3 +355,55 @@ def test_only_the_sized_tmp_and_dev_shm_are_writable(kind, monkeypatch, tiny_jud
     assert (out.status, out.value) == ("ok", [["/dev/shm", "tmpfs", 8], ["/tmp", "tmpfs", 32]]), out
     from grader.jail.sandbox import ADDRESS_HEADROOM_MB
     assert address_mb == (216 if kind == "user" else 256 + ADDRESS_HEADROOM_MB)
+
+
+def _wait_for(predicate, seconds: float = 10.0) -> bool:
+    deadline = time.monotonic() + seconds
+    while time.monotonic() < deadline:
+        if predicate():
+            return True
+        time.sleep(0.01)
+    return False
+
+
+@root_only
+def test_the_uid_sweep_still_kills_what_the_group_does_not_hold(tmp_path):
+    """The sweep skips its killer's fork only when nothing is left: a process of the slot's uid
+    outside the sandbox's cgroup (a crashed grader's, or the bubblewrap probe's) is still found
+    and killed; a jailed process (here one that made itself not dumpable) is seen in the group."""
+    from grader.jail.procs import alive, uid_processes
+    from grader.jail.paths import interpreter
+
+    with Sandbox(Limits(cpu_s=5, memory_mb=256)) as box:
+        assert box.group is not None and box.group.mechanism.startswith("cgroup"), box.group.mechanism
+        uid = box.uid
+        assert cgroups.nothing_left(box.group, uid)
+        first = os.fork()
+        if first == 0:  # pragma: no cover - child: a grandchild of the uid, not ours, not in the group
+            try:
+                if os.fork() == 0:
+                    os.setsid()
+                    os.setresgid(uid, uid, uid)
+                    os.setresuid(uid, uid, uid)
+                    time.sleep(60)
+            finally:
+                os._exit(0)
+        os.waitpid(first, 0)
+        assert _wait_for(lambda: any(alive(p) for p in uid_processes(uid)))
+        stray = [p for p in uid_processes(uid) if alive(p)]
+        assert not cgroups.nothing_left(box.group, uid)
+        box.kill_all()
+        assert not any(alive(p) for p in stray) and cgroups.nothing_left(box.group, uid)
+
+        code = "import ctypes, time; ctypes.CDLL(None).prctl(4, 0, 0, 0, 0); print('hidden', flush=True); time.sleep(60)"
+        out = tmp_path / "out.txt"
+        with open(out, "w") as f, open(os.devnull) as null:
+            proc = box.spawn([interpreter(), "-I", "-c", code], null.fileno(), f.fileno(), f.fileno())
+        assert _wait_for(lambda: "hidden" in out.read_text()), out.read_text()
+        held = box.group.held()
+        assert held and all(alive(p) for p in held), "the jailed processes are in the sandbox's group"
+        assert not cgroups.nothing_left(box.group, uid)
+        box.terminate(proc.pid)
+        proc.wait(timeout=10)
+        box.kill_all()
+        assert cgroups.nothing_left(box.group, uid) and not any(alive(p) for p in held)
