@@ -16,10 +16,11 @@ validator judging them. Its ``validators`` check (the validators' compile, then 
 of the output validator on problemtools' junk outputs, and the input validators on junk inputs,
 which can only warn) runs on :data:`FULL_MATRIX`; for every problem the same junk outputs go
 through the exported output validator in this process
-(``test_exported_output_validator_survives_problemtools_junk``), seconds instead of 20 CPU-s each. Placing the other reference solutions is one piece of code for
-every problem, so the full matrix runs on one problem, :data:`FULL_MATRIX`: every reference
-solution is judged by our judge to place it (``accepted``, ``partially_accepted``,
-``wrong_answer``), and verifyproblem must give each the verdict of its directory. For the other
+(``test_exported_output_validator_survives_problemtools_junk``), seconds instead of 20 CPU-s each.
+Placing the other reference solutions is one piece of code for every problem, so the full matrix
+runs on one problem, :data:`FULL_MATRIX`: every reference solution is judged by our judge to place
+it (``accepted``, ``partially_accepted``, ``wrong_answer``), and verifyproblem must give each the
+verdict of its directory. For the other
 problems verifyproblem runs only ``accepted/`` (``-s accepted/``); their wrong solutions' verdicts
 under our judge are tested in ``tests/grader/test_solutions.py``, and there the accepted ones
 score 100 of 100, so their expected points per exported group are each group's points.
@@ -33,8 +34,8 @@ Measured 2026-12-06 with the 12 problems: all submissions of every problem in on
 pool of 2 took 602 s of CPU (552 user + 51 system), 908 s in CI. As now (``/usr/bin/time`` around
 pytest, load average 8 on 2 cores): the full matrix on proximity-network 102 s of CPU (345 s of
 wall time), each other problem 20-25 s of CPU (55-130 s of wall time), about 330 s of CPU in all.
-Without the ``validators`` check on the other problems (2026-12-06, load 5): delaunay 38.9 -> 21.5 CPU-s
-(benchmarks/README.md, "The test suite's CI time").
+Without the ``validators`` check on the other problems (2026-12-06, load 5): delaunay 38.9 -> 21.5
+CPU-s (benchmarks/README.md, "The test suite's CI time: cuts per test").
 
 Run: .venv/bin/python -m pytest tests/grader/test_kattis.py -q
 """
