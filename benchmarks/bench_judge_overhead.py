@@ -20,7 +20,9 @@ one comment line so no two are identical) is graded in ONE run of
 * ``own``: the student's own CPU, the sum of the tests' ``time_s`` read back from the results
   store (SQLite table ``results``). It includes the child's decoding of the arguments and
   encoding of the answer (the jail measures the call as a whole).
-* ``overhead = total - own``, ``ratio = overhead / own``, and wall time (noisy under load).
+* ``overhead = total - own`` (for a compiled language ``- compile``: the judge's compile is in
+  the student's total; the compile line's figure, measured outside the jail, is subtracted),
+  ``ratio = overhead / own``, and wall time (noisy under load).
 
 Where the overhead goes (per problem, a later student, i.e. the mean of students 2..n):
 
@@ -34,8 +36,9 @@ Where the overhead goes (per problem, a later student, i.e. the mean of students
 * ``imports``: the child importing the solution's modules: ``python -I`` running the solution's
   top level (``runpy``, not as ``__main__``) minus ``python -I -c pass``, measured outside the jail.
 * ``transport``: the parent's side of moving inputs and answers: ``json.dumps`` of each call and
-  ``json.loads`` of each reply, replayed on the reference answers (measured).
-* ``checker``: ``from_result`` + ``check`` of the problem's checker on the reference answers,
+  ``json.loads`` of each reply, replayed on the reference answers (measured); where the checker
+  reads binary frames (``from_arrays``), a long float answer's reply is a frame, decoded.
+* ``checker``: ``from_result`` (or ``from_arrays``) + ``check`` of the problem's checker on the reference answers,
   replayed through the public API (``load_problem(id).checker``; measured). Both replays run in
   a fresh process that, like the judge, keeps every test's arguments (median of ``--repeat``).
 * ``rest``: overhead minus the parts above (by difference): bookkeeping (store, progress),
@@ -99,6 +102,7 @@ REPO = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(REPO))
 
 from grader import list_problems, load_problem  # noqa: E402
+from grader.judging import frames  # noqa: E402
 from grader.judging.languages import LANGUAGES as JUDGED, Language  # noqa: E402
 
 CLK_TCK = os.sysconf("SC_CLK_TCK")
@@ -517,11 +521,15 @@ def replay_here(problem_id: str) -> dict[str, float]:
         c1 = time.process_time()
         answer = chk.read_output(t.answer_text, args)
         reply_line = json.dumps({"id": k, "ok": answer}, allow_nan=True, separators=(",", ":"), default=list)
+        frame = frames.frame_of(json.loads(reply_line)["ok"]) if hasattr(chk, "from_arrays") else None
+        if frame is not None:  # as the child sends it
+            reply_line = json.dumps({"id": k, "frame": frame}, separators=(",", ":"))
         c2 = time.process_time()
         call_line = json.dumps({"id": k, "args": args}, allow_nan=True, separators=(",", ":"))
-        value = json.loads(reply_line)["ok"]
+        reply = json.loads(reply_line)
+        value = frames.decode(reply["frame"]) if frame is not None else reply["ok"]
         c3 = time.process_time()
-        got = chk.from_result(value, args)
+        got = chk.from_arrays(value, args) if frame is not None else chk.from_result(value, args)
         ok, _ = chk.check(args, got, expected)
         c4 = time.process_time()
         del call_line
@@ -727,6 +735,11 @@ def main(argv: list[str] | None = None) -> dict[str, Any]:
                 else:
                     compile_cpu = None
                 run = grade_run(meter, pid, cdir, tmp / f"{pid}-{lang_name}.sqlite", a.jobs, lang_name)
+                if compile_cpu is not None:  # each student's compile is in their total, not in the overhead
+                    for r in run.students:
+                        if r.total is not None:
+                            r.overhead = r.total - r.own - compile_cpu
+                            r.ratio = r.overhead / r.own if r.own > 0 else None
                 run.extra = {"solution": str(sol.relative_to(REPO)), "compile": compile_cpu,
                              "replay": replay(pid, a.repeat), "imports": import_cost(meter, sol, a.repeat) if not lang.compile else 0.0}
                 runs.append(run)
@@ -743,8 +756,8 @@ def main(argv: list[str] | None = None) -> dict[str, Any]:
                      "verdict"], prow))
         compiled = [run for run in runs if run.extra["compile"] is not None]
         for run in compiled:
-            print(f"  compile {run.problem} ({run.lang}): {run.extra['compile']:.3f} CPU-s (outside the jail; "
-                  "not in the ratio)")
+            print(f"  compile {run.problem} ({run.lang}): {run.extra['compile']:.3f} CPU-s (the same command outside "
+                  "the jail; subtracted from each student's overhead, so not in the ratio)")
 
         print("\n== per grade run (CPU s): before the first student, student 1's extra, after the last ==")
         rrows = []

@@ -141,6 +141,8 @@ def _checkers() -> None:
     from reference_impl.exact.verify import check_delaunay
     pts = np.random.default_rng(5).random((30, 2))
     check_delaunay(pts, Delaunay(pts).simplices)
+    from reference_impl.exact.flip_kernel import replay     # edge-flip's compiled topology replay
+    replay(4, np.array([[0, 1, 3], [1, 2, 3]]), np.array([[1, 3]]))
 
 
 FEATURES: dict[str, Callable[[], None]] = {

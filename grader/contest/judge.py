@@ -28,8 +28,10 @@ from typing import Callable, Sequence
 
 from ..judging import hidden_feedback
 from ..judging.check_budget import CheckTimeout, check_seconds, cpu_budget
+from ..judging.frames import FloatRows
 from ..judging.compile import BINARY_NAME, COMPILE_LIMITS, COMPILE_WALL_S, CompileResult, build_dir, compile_source
 from ..problems import Problem, TestCase, load_problem
+from ..judging.program_server import run_compiled
 from ..judging.runner import FunctionWorker, RunOutcome, idle_budget_for, output_paths, run_stdio
 from ..jail import Limits, Sandbox
 from ..judging.submissions import Submission, SubmissionError
@@ -323,7 +325,8 @@ class Judge:
             if mode == "function":
                 budget = self.problem.time_limit * len(self.tests) + 30
                 worker = FunctionWorker(box, sub.source, self.problem.entry, self.problem.forbidden,
-                                        filename=sub.filename, total_cpu_s=budget)
+                                        filename=sub.filename, total_cpu_s=budget,
+                                        frames=callable(getattr(self.problem.checker, "from_arrays", None)))
             try:
                 for k, test in enumerate(self.tests):
                     if test.name in prior:
@@ -357,13 +360,19 @@ class Judge:
 
     def _check(self, r: TestResult, value, args, expected, function_mode: bool) -> None:
         """Type-check and check one answer into ``r``, under a CPU budget of its own
-        (:mod:`grader.judging.check_budget`): a check that runs too long is ``TLE``, never a hung grader."""
+        (:mod:`grader.judging.check_budget`): a check that runs too long is ``TLE``, never a hung grader.
+        A binary frame (:class:`FloatRows`) goes to the checker's ``from_arrays``; a wrong answer's
+        ``received`` is the checker's reading of the same value as lists, as without frames."""
         chk = self.problem.checker
         budget = self.check_cpu_s
+        framed = function_mode and isinstance(value, FloatRows)
         try:
             with cpu_budget(budget):
                 try:
-                    answer = chk.from_result(value, args) if function_mode else chk.read_output(value, args)
+                    if framed:
+                        answer = chk.from_arrays(value, args)
+                    else:
+                        answer = chk.from_result(value, args) if function_mode else chk.read_output(value, args)
                 except chk.PresentationError as exc:
                     r.verdict, r.message = Verdict.PE, str(exc)
                     r.hidden_message = hidden_feedback.for_checker("PE", exc)
@@ -373,6 +382,8 @@ class Judge:
                     r.hidden_message = hidden_feedback.for_checker("WA", exc)
                     return
                 ok, message = chk.check(args, answer, expected)
+                if framed and not ok:
+                    answer = chk.from_result(value.tolist(), args)
         except CheckTimeout:
             r.verdict = Verdict.TLE
             r.message = (f"checking your answer took more than {budget:g} s of the grader's CPU time: the answer "
@@ -422,15 +433,19 @@ class Judge:
                 before = _file_size(worker.out_paths[0])
                 err_before = _file_size(err_path)
                 outcome = worker.call(args, time_limit, idle_left=idle_left, args_json=self._args_json(k))
+            elif program:  # one jail per submission, a fresh process per test
+                outcome = run_compiled(box, test.input_text, time_limit, self.problem.forbidden,
+                                       filename=sub.filename, idle_left=idle_left)
             else:
                 outcome = run_stdio(box, sub.source, test.input_text, time_limit, self.problem.forbidden,
-                                    filename=sub.filename, idle_left=idle_left, program=program)
+                                    filename=sub.filename, idle_left=idle_left)
             idle = outcome.idle_s
             r = TestResult(test.name, test.group, Verdict.JE, outcome.time_s, round(outcome.memory_mb, 1))
             if outcome.status == "ok":
                 self._check(r, outcome.value, args, expected, function_mode=worker is not None)
                 if r.verdict != Verdict.AC:
-                    r.answer = self._answer_text(outcome.value, r.received, function_mode=worker is not None)
+                    value = outcome.value.tolist() if isinstance(outcome.value, FloatRows) else outcome.value
+                    r.answer = self._answer_text(value, r.received, function_mode=worker is not None)
             else:
                 r.verdict, r.message = _verdict_for(outcome)
                 r.hidden_message = hidden_feedback.for_run(str(r.verdict), outcome.message, outcome.where,

@@ -3,7 +3,8 @@
 A compiled program's test used to start ``python -I`` with the jail's bootstrap, which set two
 limits, closed the control pipes and ``execv``'d the binary: about 40 ms of interpreter start-up
 charged to the student's CPU time on every test. ``launcher.c`` (next to this file) does the same
-in a few dozen lines of C (see its header). :func:`ensure` builds it with the system's C compiler
+in a few dozen lines of C (see its header); its ``serve`` mode is pid 1 of one jail per compiled
+submission and starts a fresh process per test (:mod:`grader.judging.program_server`). :func:`ensure` builds it with the system's C compiler
 (``gcc -std=c99 -O2 -static -s``) into ``<cache>/launcher/`` (``<cache>``: ``$GRADER_CACHE``,
 else ``<checkout>/.cache/grader``, as for the tests), named after a hash of its source and the
 build command, with a manifest holding the binary's SHA-256. A launcher is used only when
@@ -44,7 +45,8 @@ REPO = Path(__file__).resolve().parent.parent.parent
 COMPILERS = ("gcc", "cc")
 #: The build flags: a static binary (the jail shows /usr, but nothing must depend on it).
 CFLAGS = ("-std=c99", "-D_POSIX_C_SOURCE=200809L", "-O2", "-static", "-s")
-#: ``GRADER_LAUNCHER=python`` forces the Python bootstrap (tests of both paths; a broken compiler).
+#: ``GRADER_LAUNCHER=python`` forces the Python bootstrap, one jail per test (tests of both paths; a
+#: broken compiler); ``per-test``: the C launcher, one jail per test (the A/B of :func:`serves`).
 LAUNCHER_ENV = "GRADER_LAUNCHER"
 _warned: set[str] = set()
 
@@ -197,6 +199,13 @@ def ensure(build_missing: bool = True) -> Path | None:
     return None
 
 
+def serves() -> bool:
+    """True (the default) when a compiled submission gets one jail whose launcher, in its server
+    mode, starts a fresh process per test (:mod:`grader.judging.program_server`); False with
+    ``GRADER_LAUNCHER=per-test`` or ``python``: one jail per test."""
+    return os.environ.get(LAUNCHER_ENV) not in ("python", "per-test")
+
+
 def host_path() -> str | None:
     """:func:`ensure` as a string (what a sandbox binds), or None."""
     found = ensure()
@@ -211,7 +220,9 @@ def status() -> str:
         return f"compiled programs: started by the Python bootstrap (the launcher's source {SOURCE} is missing)"
     found = ensure(build_missing=False)
     if found is not None:
-        return f"compiled programs: started by the C launcher {found}"
+        how = "one jail per submission, a fresh process per test" if serves() else \
+            f"one jail per test, {LAUNCHER_ENV}=per-test"
+        return f"compiled programs: started by the C launcher {found} ({how})"
     cc = compiler()
     if cc is None:
         return ("compiled programs: started by the Python bootstrap (no C compiler: about 40 ms of CPU more per "

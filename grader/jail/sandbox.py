@@ -235,6 +235,7 @@ class Sandbox:
         self.files = tmpfs.FileUse(tmpfs.sizes(limits))
         self._inner = (0, 0)  # (a bubblewrap pid, its child inside the jail): see sample_files
         self._swept = False  # kill_all left no process of the uid and nothing was spawned since
+        self._attached: dict[str, object] = {}  # what lives as long as the sandbox (see attach)
 
     # -- lifecycle -------------------------------------------------------------------------
     def __enter__(self) -> "Sandbox":
@@ -304,8 +305,22 @@ class Sandbox:
         if self.uid is not None:
             os.chown(self.scratch, self.uid, self.uid)
 
+    def attach(self, name: str, thing: object | None = None) -> object | None:
+        """What was attached under ``name`` (None: nothing); with ``thing``, attach it first. An
+        attached object lives as long as the sandbox: its ``close()`` is called first by
+        :meth:`close` (a compiled program's server, :mod:`grader.judging.program_server`)."""
+        if thing is not None:
+            self._attached[name] = thing
+        return self._attached.get(name)
+
     def close(self) -> None:
-        """Kill every process of the slot and delete its files (and its cgroup)."""
+        """Close what is attached, kill every process of the slot and delete its files (and its cgroup)."""
+        for thing in list(self._attached.values()):
+            try:
+                thing.close()  # type: ignore[attr-defined]
+            except OSError:
+                pass
+        self._attached.clear()
         if not self._swept:  # else the last sweep left none, and none can have started since
             self.kill_all()
         if isinstance(self.group, cgroups.ProcTree):
@@ -324,7 +339,9 @@ class Sandbox:
 
     def _make_plan(self) -> Plan:
         assert self.group is not None
-        fontlist = matplotlib_fontlist()
+        # a compiled program has no use for matplotlib's font list (and its jail's /tmp is emptied
+        # between tests, which a read-only file bound inside it would prevent)
+        fontlist = None if self.program else matplotlib_fontlist()
         prog = seccomp.program(no_processes=self.no_processes)
         if self.kind == "bwrap" and self.profile == "compile":
             staging = self.private_dir if self.root_mode else ""
@@ -469,8 +486,11 @@ class Sandbox:
         return env
 
     def spawn(self, argv: Sequence[str], stdin: int, stdout: int, stderr: int,
-              pass_fds: Sequence[int] = (), cpu_s: float | None = None) -> subprocess.Popen:
-        """Start ``argv`` jailed; ``cpu_s`` overrides the RLIMIT_CPU of ``self.limits``."""
+              pass_fds: Sequence[int] = (), cpu_s: float | None = None,
+              seccomp_filter: bytes | None = None) -> subprocess.Popen:
+        """Start ``argv`` jailed; ``cpu_s`` overrides the RLIMIT_CPU of ``self.limits``;
+        ``seccomp_filter`` (bubblewrap only) the jail's seccomp filter: a compiled program's server
+        gets the base deny-list and installs the stricter one on each test's process itself."""
         self._swept = False
         cpu = int(cpu_s if cpu_s is not None else self.limits.cpu_s) + 1
         plan, uid, lim = self._plan, self.uid, self.limits
@@ -481,8 +501,9 @@ class Sandbox:
         argv, fds, seccomp_fd = list(argv), list(pass_fds), -1
         if plan is not None and plan.bwrap:
             opts = list(plan.bwrap)
-            if plan.seccomp:
-                seccomp_fd = seccomp.program_fd(plan.seccomp)
+            prog = seccomp_filter if seccomp_filter is not None else plan.seccomp
+            if prog:
+                seccomp_fd = seccomp.program_fd(prog)
                 opts += ["--seccomp", str(seccomp_fd)]
                 fds.append(seccomp_fd)
             argv = [bwrap_path() or "bwrap", *opts, "--", *argv]

@@ -9,6 +9,9 @@ Every other call is allowed, except, with ``program(no_processes=True)`` (the no
 which has no cgroup to charge helpers to), new processes: ``fork``, ``vfork`` and ``clone``
 without ``CLONE_THREAD`` kill the process (``SIGSYS``, judged SV); threads still start; and
 ``shmget`` and ``memfd_create`` get ``EPERM`` (RAM outside RLIMIT_AS that no cgroup charges there).
+With ``program(shared_jail=True)`` (each test's process in a jail that outlives the test: a
+compiled submission's, whose C launcher installs it) the IPC objects that would outlive the
+process (``shmget``, ``semget``, ``msgget``, ``mq_open``) get ``EPERM`` too.
 Only x86-64 is supported; elsewhere :func:`program` returns None
 and the sandbox reports "no seccomp".
 
@@ -64,6 +67,11 @@ DENIED_X86_64 = {
 #: segments of 8 MB kept 320 MB on the host for a 256 MB problem), and memfd files, RAM outside
 #: RLIMIT_AS up to RLIMIT_FSIZE each (64 open: 1 GB with a 16 MB output limit).
 ACCOUNT_DENIED_X86_64 = {"shmget": 29, "memfd_create": 319}
+#: Also denied to a test's process in a jail that outlives the test (one jail per compiled
+#: submission, :mod:`grader.jail.launcher`'s server): the IPC objects that would outlive the
+#: process in the jail's IPC namespace and carry state to the next test (SysV message queues and
+#: semaphores, POSIX message queues, SysV shared memory).
+SHARED_JAIL_DENIED_X86_64 = {"shmget": 29, "semget": 64, "msgget": 68, "mq_open": 240}
 _CLONE, _CLONE3, _FORK, _VFORK = 56, 435, 57, 58
 CLONE_THREAD = 0x00010000
 
@@ -75,14 +83,16 @@ def _insn(code: int, jt: int, jf: int, k: int) -> bytes:
     return struct.pack("=HBBI", code, jt, jf, k)
 
 
-def program(no_processes: bool = False) -> bytes | None:
+def program(no_processes: bool = False, shared_jail: bool = False) -> bytes | None:
     """The filter as raw ``struct sock_filter`` bytes, or None on an unsupported architecture;
     ``no_processes`` also kills the process on any attempt to start another one and denies
-    :data:`ACCOUNT_DENIED_X86_64`."""
+    :data:`ACCOUNT_DENIED_X86_64`; ``shared_jail`` also denies :data:`SHARED_JAIL_DENIED_X86_64`."""
     if platform.machine() not in ("x86_64", "AMD64"):
         return None
     eperm = SECCOMP_RET_ERRNO | errno.EPERM
-    denied = sorted(DENIED_X86_64.values()) + (sorted(ACCOUNT_DENIED_X86_64.values()) if no_processes else [])
+    denied = set(DENIED_X86_64.values()) | (set(ACCOUNT_DENIED_X86_64.values()) if no_processes else set()) \
+        | (set(SHARED_JAIL_DENIED_X86_64.values()) if shared_jail else set())
+    denied = sorted(denied)
     out = [
         _insn(_LD_W_ABS, 0, 0, 4),  # seccomp_data.arch
         _insn(_JEQ_K, 1, 0, AUDIT_ARCH_X86_64),

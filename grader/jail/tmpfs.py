@@ -86,6 +86,15 @@ class FileUse:
                 self.filled.add(mount)
         return inside
 
+    def note(self, mount: str, used_mb: float) -> None:
+        """Record ``used_mb`` MiB seen used in ``mount`` by someone inside the jail (a compiled
+        program's server measures its mounts when a test's process has ended, before emptying them)."""
+        if mount not in self.mounts:
+            raise ValueError(f"{mount!r} is not a writable mount of the jail ({', '.join(self.mounts)})")
+        self.peak[mount] = max(self.peak.get(mount, 0.0), used_mb)
+        if (self.mounts[mount] - used_mb) * (1 << 20) < FULL_SLACK:
+            self.filled.add(mount)
+
     def peak_mb(self) -> float:
         """MiB the submission kept in the jail's file systems at most (summed over the mounts)."""
         return sum(self.peak.values())

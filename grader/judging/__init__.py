@@ -2,6 +2,7 @@
 
 ========================  =================================================================
 ``runner``                the parent side of a jailed run: function mode and stdio mode
+``frames``                a long float answer as a binary frame: the parent's checked decoder
 ``languages``             languages as data: suffixes, how a file becomes code, compile and run rules
 ``submissions``           reading a ``.py``/``.ipynb`` safely; function or stdio mode
 ``verdicts``              verdicts, per-test and overall results, the table

@@ -16,12 +16,13 @@ list, ``answer`` the checker's own parsed form of an answer):
 | ``LIBRARY`` (optional) | tuple of stdlib-only modules ``reference_impl/<name>.py`` bound as globals (optional imports allowed) |
 | ``read_answer(text, args)`` (optional) | parse an ``.ans`` text when it is not in the output format |
 | ``draw(axes, args, received, expected)`` (optional) | picture for the HTML report on a pair of Axes |
+| ``from_arrays(rows, args) -> answer`` (optional) | a long float answer sent as a binary frame (``frames``): as ``from_result(rows.tolist(), args)`` |
 
 It must not define its own ``__main__`` entry: ``export-kattis`` appends the shared one. The checks
 here: the names and signatures; stdlib-only imports (checker and library, ``draw`` excepted); on
 every test ``read_input(write_input(args)) == args``, ``read_output(write_output(answer)) ==
 answer`` for the reference answer, which ``check`` accepts, also after a JSON round trip through
-``from_result``; ``draw`` runs on the first test; and on every committed sample the rule of
+``from_result`` (and, with ``from_arrays``, as a binary frame); ``draw`` runs on the first test; and on every committed sample the rule of
 :mod:`grader.judging.checker_attacks` holds: ``from_result``, ``read_output`` and ``check`` raise nothing but
 ``PresentationError`` (or ``WrongAnswer``) on a fixed corpus of hostile answers.
 
@@ -41,10 +42,11 @@ from typing import Any, Sequence
 
 from . import checker_attacks
 from . import checker_runtime
+from . import frames
 from . import hidden_feedback
 
 REQUIRED = {"read_input": 1, "write_input": 1, "from_result": 2, "read_output": 2, "write_output": 1, "check": 3}
-OPTIONAL = {"read_answer": 2, "draw": 4}
+OPTIONAL = {"read_answer": 2, "draw": 4, "from_arrays": 2}
 STDLIB = set(sys.stdlib_module_names) | {"__future__"}
 
 
@@ -147,6 +149,11 @@ def _test_errors(problem, test) -> list[str]:
     ok, message = chk.check(args, chk.from_result(as_json, args), expected)
     if not ok:
         return [f"{where} the reference answer, returned as JSON data, is rejected: {message[:200]}"]
+    frame = frames.frame_of(as_json) if callable(getattr(chk, "from_arrays", None)) else None
+    if frame is not None:
+        ok, message = chk.check(args, chk.from_arrays(frames.decode(frame), args), expected)
+        if not ok:
+            return [f"{where} the reference answer, returned as a binary frame (from_arrays), is rejected: {message[:200]}"]
     return []
 
 

@@ -66,11 +66,15 @@ def _library_node(source: str, filename: str = "checker.py"):
                  and any(isinstance(t, ast.Name) and t.id == "LIBRARY" for t in node.targets)), None)
 
 
-def bind_library(namespace: dict, sources: dict) -> None:
-    """Execute each library module's source (name -> text) as a module and bind it in ``namespace``."""
+def bind_library(namespace: dict, sources: dict, standalone: bool = False) -> None:
+    """Execute each library module's source (name -> text) as a module and bind it in ``namespace``.
+
+    Each module sees ``STANDALONE``: True in an exported Kattis validator (:func:`embed`), where it
+    must not import anything from the checkout even when an installed copy could be found."""
     for name, source in sources.items():
         module = types.ModuleType(f"checker_library_{name}")
         module.__file__ = f"{name}.py"
+        module.STANDALONE = standalone
         sys.modules[module.__name__] = module  # dataclasses and pickling look modules up here
         exec(compile(source, f"{name}.py", "exec"), module.__dict__)
         namespace[name] = module
@@ -140,7 +144,7 @@ def embed(checker_source: str, library_dir=None) -> str:
     block += ['_checker_runtime = {"__name__": "checker_runtime"}',
               'exec(compile(EMBEDDED_CHECKER_RUNTIME_SOURCE, "checker_runtime.py", "exec"), _checker_runtime)',
               '_checker_runtime["bind_library"](globals(), {'
-              + ", ".join(f"{n!r}: EMBEDDED_{n.upper()}_SOURCE" for n in names) + "})",
+              + ", ".join(f"{n!r}: EMBEDDED_{n.upper()}_SOURCE" for n in names) + "}, standalone=True)",
               "# ---- end of the inserted block"]
     lines = checker_source.rstrip("\n").split("\n")
     node = _library_node(checker_source)

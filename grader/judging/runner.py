@@ -31,6 +31,7 @@ from ..jail import BOOTSTRAP_PATH, Sandbox, python_roots
 from ..jail.paths import interpreter, site_paths
 from ..jail.cgroups import SAMPLE_S, ProcTree
 from ..jail.engines import ENGINE_API, IMPORTED_BY_LIBRARIES, engine_libraries, engine_modules
+from .frames import decode as decode_frame
 from .text import clean
 
 #: The child's program (the grader's directory is not visible in the jail). It is compiled once
@@ -252,6 +253,8 @@ class _Child:
         self.max_bytes = (box.limits.output_mb << 20) + (1 << 16)  # the answer plus its JSON envelope
         self.line_budget = MAX_CONTROL_LINES + 1  # the load reply, then one per request sent
         self.want_id: int | None = None
+        #: the reply keys a call may carry: "frame" only where the worker asked for frames
+        self.reply_keys = _REPLY_KEYS + ("frame",) if config.get("frames") else _REPLY_KEYS
         self.junk = False
         self.replies: list[dict] = []
         self.exit_status: int | None = None
@@ -350,7 +353,7 @@ class _Child:
         elif len(obj) == 1 and next(iter(obj)) in ("loaded", "load_error", "exit"):
             pass
         elif (len(obj) == 2 and type(obj.get("id")) is int and obj["id"] == self.want_id
-              and any(k in obj for k in _REPLY_KEYS)):
+              and any(k in obj for k in self.reply_keys)):
             self.want_id = None  # a second reply with the same id is junk
         else:
             obj = None
@@ -464,9 +467,14 @@ class FunctionWorker:
     """One worker process per submission; reused across tests, restarted after a crash or timeout."""
 
     def __init__(self, box: Sandbox, source: str, entry: str, forbidden: Sequence[str],
-                 filename: str = "submission.py", load_timeout: float = 10.0, total_cpu_s: float = 60.0):
+                 filename: str = "submission.py", load_timeout: float = 10.0, total_cpu_s: float = 60.0,
+                 frames: bool = False):
+        """``frames``: a long answer of float rows comes back as a ``FloatRows`` (a binary
+        frame, :mod:`grader.judging.frames`) instead of nested lists; the caller takes both."""
         self.box, self.source, self.entry = box, source, entry
         self.config = _child_config(box, "function", entry, forbidden, filename)
+        if frames:
+            self.config["frames"] = True
         self.load_timeout = load_timeout
         self.total_cpu_s = total_cpu_s
         self.child: _Child | None = None
@@ -620,6 +628,13 @@ class FunctionWorker:
         if "bad_type" in reply:
             return RunOutcome("bad_type", message=f"returned a value of type {clean(reply['bad_type'], 200)}",
                               time_s=time_s, memory_mb=mem)
+        if "frame" in reply:  # only where asked for (_Child.reply_keys); checked part by part
+            try:
+                value: Any = decode_frame(reply["frame"])
+            except ValueError as exc:
+                return RunOutcome("bad_type", message=f"the answer's binary frame is malformed: {exc}",
+                                  time_s=time_s, memory_mb=mem)
+            return RunOutcome("ok", value=value, time_s=time_s, memory_mb=mem)
         if "ok" not in reply:
             return RunOutcome("bad_type", message="the worker sent an unreadable answer", time_s=time_s, memory_mb=mem)
         return RunOutcome("ok", value=reply["ok"], time_s=time_s, memory_mb=mem)
@@ -630,7 +645,8 @@ def run_stdio(box: Sandbox, source: str, input_text: str, time_limit: float, for
     """Run the submission once as a program with ``input_text`` on stdin; output in ``.value``.
     It is stopped once it has spent ``idle_left`` seconds of wall time not computing.
     ``program``: run the sandbox's compiled binary (``Sandbox(program=...)``) instead of ``source``;
-    its stack may grow up to the memory limit."""
+    its stack may grow up to the memory limit; this runs it in a jail of its own (the judge runs a
+    compiled program's tests in one jail, :func:`grader.judging.program_server.run_compiled`)."""
     if idle_left <= 0:
         return RunOutcome("timeout", message="the submission's wall-time budget is used up (it spent it "
                                              "sleeping or blocked)", time_s=time_limit)

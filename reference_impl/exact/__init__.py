@@ -9,6 +9,8 @@
   sort of edges by length (the proximity graphs' arithmetic).
 - ``verify``: exact checkers in Python integers (stdlib only: the judge's checkers load it).
 - ``free_space``: exact point, segment and path tests in a polygon with holes (stdlib only).
+- ``flip_replay`` with ``flip_kernel``: the ``edge-flip`` checker's fast pass (stdlib only) and
+  its optional compiled replay of the flips' topology (numba).
 
 Nothing here imports the mesh or the structures built on it; the Python entry points
 (``orient2d``, ``orient3d``, ...) validate their input with ``reference_impl.validate``.

@@ -20,6 +20,13 @@ cannot decide, or one at a time with ``verify``'s filtered predicates. All posit
 legal at its turn, and the final triangles (the same set as the checker's replay, in another order)
 go to ``verify.check_delaunay``, whose verdict does not depend on the order.
 
+On a long answer (``COMPILED_MIN_FLIPS`` flips or more, numpy there) the topology is replayed by
+``flip_kernel.replay`` instead, the same replay compiled with numba (about a microsecond a flip in
+Python, a few hundredths of one compiled). It is imported only then, and only when it can be: an
+exported Kattis validator, without ``reference_impl`` or numba, keeps the Python replay. Both
+replays refuse the same answers (``tests/exact/test_flip_kernel.py``), and a refusal concludes
+nothing either way: the checker's own replay decides and writes the message.
+
 Run the doctest: ``python -m pytest --doctest-modules reference_impl/exact/flip_replay.py``
 
 >>> import importlib.util
@@ -35,6 +42,25 @@ Run the doctest: ``python -m pytest --doctest-modules reference_impl/exact/flip_
 from __future__ import annotations
 
 from itertools import chain
+
+#: answers with at least this many flips replay their topology in compiled code (``flip_kernel``)
+COMPILED_MIN_FLIPS = 512
+_KERNEL: list = []          # [flip_kernel module or None], filled on first use
+
+
+def compiled_kernel():
+    """``reference_impl.exact.flip_kernel`` (numba), or None: in an exported Kattis validator
+    (``STANDALONE``, bound by the loader: it runs only its own embedded code), or where it cannot be
+    imported (no numba)."""
+    if not _KERNEL:
+        flip_kernel = None
+        if not globals().get("STANDALONE", False):
+            try:
+                from reference_impl.exact import flip_kernel
+            except (ImportError, OSError, RuntimeError):  # no numba, or no cache numba can use
+                flip_kernel = None
+        _KERNEL.append(flip_kernel)
+    return _KERNEL[0]
 
 
 def topology(n: int, triangles: list, flips: list) -> tuple[list, list, dict] | None:
@@ -72,13 +98,16 @@ def topology(n: int, triangles: list, flips: list) -> tuple[list, list, dict] | 
     return cs, ds, opp
 
 
-def _all_positive_bulk(bulk, verify, P, F, A, B, C, D) -> bool:
+def _all_positive_bulk(bulk, verify, P, F, arrays, A, B, C, D) -> bool:
     """Are incircle(a, b, c, d), orient(c, d, b) and orient(d, c, a) positive for every flip
-    (numpy filters, integers where they cannot decide)?"""
+    (numpy filters, integers where they cannot decide)? ``arrays``: the point list's cached numpy
+    copies (``verify._prepared``; the coordinates are added when missing)."""
     np = bulk.np
-    xy = np.array(F, dtype=np.float64).reshape(-1, 2)
-    X, Y = xy[:, 0], xy[:, 1]
-    a, b, c, d = (np.array(v, dtype=np.int64) for v in (A, B, C, D))
+    if "x" not in arrays:
+        xy = np.array(F, dtype=np.float64).reshape(-1, 2)
+        arrays.update(x=xy[:, 0].copy(), y=xy[:, 1].copy())
+    X, Y = arrays["x"], arrays["y"]
+    a, b, c, d = (np.asarray(v, dtype=np.int64) for v in (A, B, C, D))
     checks = ((bulk.incircle(X[a], Y[a], X[b], Y[b], X[c], Y[c], X[d], Y[d]),
                lambda k: verify.incircle_exact(P[A[k]], P[B[k]], P[C[k]], P[D[k]])),
               (bulk.orient2d(X[c], Y[c], X[d], Y[d], X[b], Y[b]),
@@ -119,17 +148,28 @@ def accepts(points, triangles, flips, verify, bulk=None) -> bool:
         flat = [rep[v] for v in flat]
         flips = [flat[k:k + 2] for k in range(0, len(flat), 2)]
         rows = [[rep[a], rep[b], rep[c]] for a, b, c in rows]
-    replayed = topology(n, rows, flips)
-    if replayed is None:
-        return False
-    cs, ds, opp = replayed
-    A, B = flat[0::2], flat[1::2]
-    _, F, _, _, _, _, tame, _ = verify._prepared(points, "2d", verify._prepare_2d)
-    if bulk is not None and bulk.AVAILABLE and tame and len(flips) >= 16 and n < 1 << 31:
-        if not _all_positive_bulk(bulk, verify, P, F, A, B, cs, ds):
+    numpy = bulk is not None and bulk.AVAILABLE and n < 1 << 31
+    kernel = compiled_kernel() if numpy and len(flips) >= COMPILED_MIN_FLIPS else None
+    if kernel is not None:
+        np = bulk.np
+        pairs = np.array(flat, dtype=np.int64).reshape(-1, 2)
+        ok, cs, ds, final = kernel.replay(n, np.fromiter(chain.from_iterable(rows), np.int64, 3 * len(rows)).reshape(-1, 3),
+                                          pairs)
+        if not ok:
+            return False
+        A, B = pairs[:, 0], pairs[:, 1]      # final: an int64 array, which check_delaunay's numpy pass takes as is
+    else:
+        replayed = topology(n, rows, flips)
+        if replayed is None:
+            return False
+        cs, ds, opp = replayed
+        A, B = flat[0::2], flat[1::2]
+        final = [[key // n, key % n, w] for key, w in opp.items() if key // n < key % n and key // n < w]
+    _, F, _, _, _, _, tame, arrays = verify._prepared(points, "2d", verify._prepare_2d)
+    if numpy and tame and len(flips) >= 16:
+        if not _all_positive_bulk(bulk, verify, P, F, arrays, A, B, cs, ds):
             return False
     elif not all(incircle(a, b, c, d) > 0 and orient(c, d, b) > 0 and orient(d, c, a) > 0
-                 for a, b, c, d in zip(A, B, cs, ds)):
+                 for a, b, c, d in zip(*(v if type(v) is list else v.tolist() for v in (A, B, cs, ds)))):
         return False
-    final = [[key // n, key % n, w] for key, w in opp.items() if key // n < key % n and key // n < w]
     return verify.check_delaunay(points, final, bulk)[0]

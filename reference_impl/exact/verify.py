@@ -369,6 +369,9 @@ def _delaunay_accepts(points, triangles, bulk=None) -> bool:
     """True only when every check of :func:`_check_delaunay_integers` passes (False: ask it why)."""
     P, F, rep, n_distinct, hull_edges, flat, tame, arrays = _prepared(points, "2d", _prepare_2d)
     use_bulk = bulk is not None and bulk.AVAILABLE and tame and not flat and len(P) < 1 << 31
+    if (use_bulk and type(triangles) is bulk.np.ndarray and triangles.ndim == 2 and triangles.shape[1] == 3
+            and triangles.dtype.kind == "i" and len(triangles) >= 16):
+        return _delaunay_accepts_bulk(bulk, P, F, rep, n_distinct, hull_edges, arrays, triangles)  # no lists
     rows = _int_rows(triangles, len(P), 3, check_range=not use_bulk)
     if rows is None:
         return False
@@ -409,12 +412,13 @@ def _delaunay_accepts_bulk(bulk, P, F, rep, n_distinct, hull_edges, arrays, rows
     most signs at once (``bulk``), integers the rest; edges matched by sorting their keys."""
     np = bulk.np
     n = len(P)
-    if not arrays:
+    if "hull" not in arrays:  # (flip_replay may have cached x and y alone)
         xy = np.array(F, dtype=np.float64).reshape(-1, 2)
         arrays.update(x=xy[:, 0].copy(), y=xy[:, 1].copy(), rep=np.array(rep, dtype=np.int64),
                       hull=np.sort(np.array([u * n + v for u, v in hull_edges], dtype=np.int64)))
     X, Y = arrays["x"], arrays["y"]
-    ids = np.fromiter(itertools.chain.from_iterable(rows), np.int64, 3 * len(rows))
+    ids = (rows.astype(np.int64).ravel() if type(rows) is np.ndarray   # rows: lists, or an integer array
+           else np.fromiter(itertools.chain.from_iterable(rows), np.int64, 3 * len(rows)))
     if ids.min() < 0 or ids.max() >= n:
         return False
     t = arrays["rep"][ids.reshape(-1, 3)]

@@ -170,9 +170,16 @@ def test_picker_points_typed_as_text(page):
     assert got == want and kernel(page, "print(json.dumps(len(picker.triangles)))") == 1
     # a bad line: named in the message, the points unchanged
     picker.locator("textarea").focus()
+    assert page.evaluate(ACTIVE)[0] == "textarea"
     page.keyboard.press("Control+A")
     page.keyboard.type("0, 0\n1; 2\n3, 4")
     page.keyboard.press("Tab")
+    assert page.evaluate(ACTIVE) == ["button", "set points"]
+    # the box's text reaches the kernel when it loses the focus. On a loaded CI machine the error
+    # once never came (the kernel kept the old points): waiting until the kernel holds the new
+    # text first tells a lost text apart from a lost click
+    bad = "0, 0\n1; 2\n3, 4"
+    assert wait_kernel(page, "print(json.dumps(picker.text.value))", bad) == bad
     page.keyboard.press("Enter")
     message = picker.locator(".kit-text-error[role='alert']")
     message.wait_for(timeout=30_000)

@@ -9,7 +9,8 @@
 * ``verify.check_delaunay``'s numpy pass pairs edges by one sort of packed keys: it must agree with
   the searchsorted pairing it replaced (still used above 2^20 points) and with the integer-only check,
   on Delaunay triangulations, wrong ones (repeated, reversed, dropped, out-of-range triangles) and
-  valid triangulations with one edge flipped.
+  valid triangulations with one edge flipped, given as lists and as integer arrays (the edge-flip
+  checker's compiled replay hands its final triangles over as an int64 array).
 * The per-list caches (``edgesets.remembered``, largest-empty-circle's hull) follow a list changed
   in place.
 
@@ -224,6 +225,8 @@ def test_delaunay_packed_pairing_agrees_with_searchsorted_and_integers(kind, mon
     for answer in answers:
         want = verify._check_delaunay_integers(points, answer)
         assert verify.check_delaunay(points, answer, bulk) == want, answer[:3]
+        for dtype in (np.int64, np.int32):   # an integer array goes to the numpy pass without lists
+            assert verify.check_delaunay(points, np.array(answer, dtype=dtype), bulk) == want, answer[:3]
         with monkeypatch.context() as m:
             m.setattr(verify, "_PACKED_MAX_N", 0)   # the searchsorted pairing, as above 2^20 points
             assert verify.check_delaunay(points, answer, bulk) == want

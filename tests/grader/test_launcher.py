@@ -25,7 +25,7 @@ from grader.jail import Limits, Sandbox, doctor, launcher
 from grader.jail.sandbox import jail_kind
 from grader.judging.compile import compile_source
 from grader.judging.languages import CPP
-from grader.judging.runner import run_stdio
+from grader.judging.program_server import run_compiled
 
 from . import ordinary_user
 
@@ -79,7 +79,7 @@ def probe(tmp_path_factory) -> str:
 def _started(binary: str, monkeypatch, starter: str) -> tuple[str, str | None]:
     monkeypatch.setenv(launcher.LAUNCHER_ENV, starter)
     with Sandbox(Limits(cpu_s=2, memory_mb=256), program=binary) as box:
-        out = run_stdio(box, "", "", 2.0, [], program=True)
+        out = run_compiled(box, "", 2.0)
         assert out.status == "ok", (out.status, out.message)
         return out.value, box.launcher
 
@@ -87,12 +87,26 @@ def _started(binary: str, monkeypatch, starter: str) -> tuple[str, str | None]:
 @needs_gcc
 @needs_jail
 def test_the_launcher_starts_a_program_exactly_as_the_bootstrap_did(probe, monkeypatch):
-    by_launcher, used = _started(probe, monkeypatch, "c")
+    by_launcher, used = _started(probe, monkeypatch, "per-test")
     by_python, none = _started(probe, monkeypatch, "python")
     assert used and none is None, (used, none)
     assert "fd 3 open" not in by_launcher and "SigIgn:\t0000000000000000" not in by_launcher, by_launcher
     assert "pid 1 " in by_launcher and "argv0 /submission/program" in by_launcher, by_launcher
     assert by_launcher.splitlines() == by_python.splitlines()
+
+
+@needs_gcc
+@needs_jail
+def test_the_launchers_server_starts_each_test_as_the_per_test_jail_did(probe, monkeypatch):
+    """One jail per submission: the same limits, signals, descriptors, environment, directory and
+    filter; only the pid differs (the server is pid 1) and the filter is stacked on the jail's own."""
+    served, _ = _started(probe, monkeypatch, "serve")
+    per_test, _ = _started(probe, monkeypatch, "per-test")
+    differ = {"Seccomp_filters:\t1": "Seccomp_filters:\t2", "pid 1 argc": "pid 2 argc"}
+    expected = []
+    for line in per_test.splitlines():
+        expected.append(next((line.replace(a, b) for a, b in differ.items() if line.startswith(a)), line))
+    assert served.splitlines() == expected
 
 
 def _fresh(tmp_path: Path, monkeypatch) -> Path:
@@ -172,7 +186,7 @@ def test_a_program_that_cannot_start_is_exit_127_with_both_starters(tmp_path, mo
     for starter in ("c", "python"):
         monkeypatch.setenv(launcher.LAUNCHER_ENV, starter)
         with Sandbox(Limits(cpu_s=2, memory_mb=256), program=str(bad)) as box:
-            out = run_stdio(box, "", "", 2.0, [], program=True)
+            out = run_compiled(box, "", 2.0)
         assert "exited with code 127" in out.message, (starter, out.status, out.message)
 
 

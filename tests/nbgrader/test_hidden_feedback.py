@@ -290,7 +290,13 @@ def test_a_counterexample_in_the_feedback_and_the_json_leaks_nothing(pid, entry,
     assert normalized(found.input) not in hidden_inputs(full)
     # the counterexample's own numbers (the submission prints them as hex, repr, ...) are its to show
     own = " ".join(form for tok in found.input.split() for form in _forms(tok))
-    assert leaks(problem, json.dumps(result.to_json()["groups"]), own) == []
+    # the search's wall time is the grader's own measurement: "seconds": 10.614 once matched a
+    # hidden number's first digits ("0.61"), so it is left out of the text searched for leaks
+    groups = result.to_json()["groups"]
+    for g in groups:
+        if g.get("counterexample"):
+            g["counterexample"] = {k: v for k, v in g["counterexample"].items() if k != "seconds"}
+    assert leaks(problem, json.dumps(groups), own) == []
     for level in HIDDEN_LEVELS:
         with policy(problem, level):
             feedback = notebook_feedback(problem, result)

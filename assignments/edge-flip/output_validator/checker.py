@@ -10,9 +10,9 @@ inside the circumcircle of ``a b c`` (then the quadrilateral is strictly convex;
 too). The edge is replaced by ``c d``. After the last flip the triangulation must be Delaunay
 (``verify.check_delaunay``). Every decision is exact (``verify``'s predicates: a float filter with a proven
 error bound, Python integers where it cannot decide). A valid answer is accepted by a faster pass
-first (``flip_replay.accepts``: the flips' topology replayed alone, then every flip's predicates
-decided at once); whatever it does not accept is replayed here flip by flip, which gives the verdict
-and the message.
+first (``flip_replay.accepts``: the flips' topology replayed alone, in compiled code on a long
+answer when numba is there, then every flip's predicates decided at once); whatever it does not
+accept is replayed here flip by flip, which gives the verdict and the message.
 
 Example:
     >>> check([[[0, 0], [4, 0], [4, 1], [0, 3]], [[0, 1, 3], [1, 2, 3]]], [[1, 3]], None)

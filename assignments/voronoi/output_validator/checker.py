@@ -17,7 +17,9 @@ the true cell lies within eps of the received polygon; and the areas agree. Both
 together bound the distance between the two polygons by eps, so any vertex order, starting
 vertex, or extra vertices on an edge are accepted. With numpy (``bulk``, optional) the cells that
 pass all of this with a margin are picked out at once (``_settled``) and only the others are
-checked one by one: the same verdicts and messages, in less time.
+checked one by one: the same verdicts and messages, in less time. In the grader a long answer
+comes as arrays (``from_arrays``: a binary frame of float64 vertices and per-cell counts), which
+that pass uses as they are; its cells become lists only where a cell is checked on its own.
 
 Example:
     >>> args = [[[0.0, 0.0], [2.0, 0.0]], [-1.0, -1.0, 3.0, 1.0]]
@@ -108,6 +110,42 @@ def from_result(value, args: list) -> list:
                                                  for p in cell[:max_vertices(len(points))[0] + 1]):
             raise PresentationError(f"cell {i} should be a list of [x, y] vertices, got {show(cell, 60)}")
     return _cells(value, len(points))
+
+
+class _Cells:
+    """An answer read by :func:`from_arrays`: cell ``i`` is ``rows[starts[i]:starts[i] + counts[i]]``
+    of an (m, 2) float64 array; a cell is made a list of ``[x, y]`` only when it is asked for."""
+
+    __slots__ = ("rows", "counts", "starts")
+
+    def __init__(self, rows, counts):
+        self.rows, self.counts = rows, counts
+        self.starts = bulk.np.cumsum(counts) - counts  # noqa: F821 - bound by the loader
+
+    def __len__(self) -> int:
+        return len(self.counts)
+
+    def __getitem__(self, i: int) -> list:
+        start = int(self.starts[i])
+        return self.rows[start:start + int(self.counts[i])].tolist()
+
+    def __iter__(self):
+        return (self[i] for i in range(len(self)))
+
+
+def from_arrays(value, args: list):
+    """The grader's reading of an answer that came as a binary frame (``value.rows``: (m, 2)
+    float64 vertices, ``value.counts``: vertices per cell, as int64): accepted here exactly when
+    :func:`from_result` accepts the same value as lists (one cell per point, within the size
+    bounds, every coordinate finite), without making the lists; anything else is handed to
+    :func:`from_result` as lists, which raises the same ``PresentationError`` as without frames."""
+    n = len(args[0])
+    counts, rows = value.counts, value.rows
+    if bulk.AVAILABLE and counts is not None and len(counts) == n and rows.ndim == 2 and rows.shape[1] == 2:  # noqa: F821
+        per_cell, total = max_vertices(n)
+        if len(rows) <= total and (n == 0 or int(counts.max()) <= per_cell) and bool(bulk.np.isfinite(rows).all()):  # noqa: F821
+            return _Cells(rows, counts)
+    return from_result(value.tolist(), args)
 
 
 def read_output(text: str, args: list) -> list:
@@ -205,14 +243,19 @@ def _settled(cells: list, expected: list, k: int, box: tuple, eps: float, near_e
         return None
     np = bulk.np  # noqa: F821
     n = len(cells)
-    kC = np.fromiter(map(len, cells), np.int64, n)
+    arrays = isinstance(cells, _Cells)
+    kC = cells.counts if arrays else np.fromiter(map(len, cells), np.int64, n)
     kR = np.fromiter(map(len, expected), np.int64, n)
     if int(kC.sum()) + int(kR.sum()) < BULK_MIN:
         return None
     x0, y0, x1, y1 = box
+
+    def flat(rows, kk):
+        return np.fromiter(chain.from_iterable(chain.from_iterable(rows)), np.float64, 2 * int(kk.sum())).reshape(-1, 2)
+
     with np.errstate(all="ignore"):
-        C, R = (np.ldexp(np.fromiter(chain.from_iterable(chain.from_iterable(rows)), np.float64,
-                                     2 * int(kk.sum())).reshape(-1, 2), -k) for rows, kk in ((cells, kC), (expected, kR)))
+        C = np.ldexp(cells.rows if arrays else flat(cells, kC), -k)
+        R = np.ldexp(flat(expected, kR), -k)
         ok = (kC >= 3) & (kR >= 3) & (kC * kR <= PAIRS_MAX)
         rings = []
         for V, kk in ((C, kC), (R, kR)):
@@ -272,7 +315,7 @@ MISTAKES = {
 def check(args: list, cells: list, expected: list) -> tuple[bool, str]:
     """Each cell against the reference cell (see the module docstring)."""
     points, bbox = args
-    big = max([abs(c) for p in points for c in p] + [abs(v) for v in bbox])
+    big = max(chain(map(abs, chain.from_iterable(points)), map(abs, bbox)))   # in C loops
     k = math.frexp(big)[1] if big > 0 else 0
 
     def s(v: float) -> float:                            # work at unit scale: no overflow at 1e300
@@ -288,12 +331,10 @@ def check(args: list, cells: list, expected: list) -> tuple[bool, str]:
     eps = REL_TOL * max(x1 - x0, y1 - y0) + ABS_TOL * s(big)
     near_eps = eps * 0.7  # a vertex this close in x and in y is within eps (0.7 * sqrt(2) < 1) of it
     settled = _settled(cells, expected, k, (x0, y0, x1, y1), eps, near_eps)
-    P = None
-    for i, (cell, ref) in enumerate(zip(cells, expected)):
+    for i in range(min(len(cells), len(expected))):
         if settled is not None and settled[i]:
             continue                                     # passes every test below, with a margin
-        if P is None:
-            P = [[s(x), s(y)] for x, y in points]
+        cell, ref = cells[i], expected[i]                # (from arrays: this cell made a list only now)
         C = [[s(x), s(y)] for x, y in cell]
         R = [[s(x), s(y)] for x, y in ref]
         if not C or not R:
@@ -307,6 +348,7 @@ def check(args: list, cells: list, expected: list) -> tuple[bool, str]:
             if not (x0 - eps <= vx <= x1 + eps and y0 - eps <= vy <= y1 + eps):
                 return False, f"cell {i}: vertex ({u(vx)!r}, {u(vy)!r}) is outside the box {bbox}"
             if not _near_vertex(R, vx, vy, near_eps) and _outside(R, [vx, vy]) > eps:
+                P = [[s(x), s(y)] for x, y in points]    # the sites at unit scale, for the message
                 own = math.hypot(vx - P[i][0], vy - P[i][1])
                 j = min(range(len(P)), key=lambda m: math.hypot(vx - P[m][0], vy - P[m][1]))
                 near = math.hypot(vx - P[j][0], vy - P[j][1])
