@@ -108,12 +108,14 @@ def test_judge_exit_code_and_print_output(tmp_path):
     assert ok.returncode == 0, ok.stdout + ok.stderr
     bad = tmp_path / "chatty.py"
     bad.write_text(CHATTY_WRONG)
-    r = grader("judge", "tiny-delaunay", str(bad), problems=fixtures)
+    # no counterexample search (10 s a judging by default; tested in test_counterexample.py): the print output is the point
+    r = grader("judge", "tiny-delaunay", str(bad), "--counterexample-seconds", "0", problems=fixtures)
     assert r.returncode == 1, r.stdout + r.stderr
     assert "--- your print() output in this test ---" in r.stdout
     assert "debug: got 4 points" in r.stdout  # the first failing test is the 4-point sample
     assert "more bytes not shown" in r.stdout and "x" * 5000 not in r.stdout  # capped
-    js = json.loads(grader("judge", "tiny-delaunay", str(bad), "--json", problems=fixtures).stdout)
+    js = json.loads(grader("judge", "tiny-delaunay", str(bad), "--json", "--counterexample-seconds", "0",
+                           problems=fixtures).stdout)
     assert js["verdict"] == "WA" and "debug: got 4 points" in js["tests"][0]["message"]
 
 

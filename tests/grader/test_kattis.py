@@ -8,14 +8,19 @@ scored group (the large one, where a too-slow solution times out), i.e. ``--grou
 <first>,<last>:1``. Problems are discovered, so new ones are covered when they arrive; one test
 per problem, so pytest-xdist spreads them over its workers.
 
-Every problem's package goes through verifyproblem's ``config``, ``data``, ``validators`` and
-``submissions`` checks: problem.yaml, the test data and its testdata.yaml files, the input
-validators on every exported test, the output validator, and the accepted submissions, which must
-be AC with full points in every exported group (``accepted.cpp`` compiled with problemtools' own
-flags beside the Python one). Placing the other reference solutions is one piece of code for
-every problem, so the full matrix runs on one problem, :data:`FULL_MATRIX`: every reference
-solution is judged by our judge to place it (``accepted``, ``partially_accepted``,
-``wrong_answer``), and verifyproblem must give each the verdict of its directory. For the other
+Every problem's package goes through verifyproblem's ``config``, ``data`` and ``submissions``
+checks: problem.yaml, the test data and its testdata.yaml files, the input validators on every
+exported test, and the accepted submissions, which must be AC with full points in every exported
+group (``accepted.cpp`` compiled with problemtools' own flags beside the Python one), the output
+validator judging them. Its ``validators`` check (the validators' compile, then about a hundred runs
+of the output validator on problemtools' junk outputs, and the input validators on junk inputs,
+which can only warn) runs on :data:`FULL_MATRIX`; for every problem the same junk outputs go
+through the exported output validator in this process
+(``test_exported_output_validator_survives_problemtools_junk``), seconds instead of 20 CPU-s each.
+Placing the other reference solutions is one piece of code for every problem, so the full matrix
+runs on one problem, :data:`FULL_MATRIX`: every reference solution is judged by our judge to place
+it (``accepted``, ``partially_accepted``, ``wrong_answer``), and verifyproblem must give each the
+verdict of its directory. For the other
 problems verifyproblem runs only ``accepted/`` (``-s accepted/``); their wrong solutions' verdicts
 under our judge are tested in ``tests/grader/test_solutions.py``, and there the accepted ones
 score 100 of 100, so their expected points per exported group are each group's points.
@@ -29,6 +34,8 @@ Measured 2026-12-06 with the 12 problems: all submissions of every problem in on
 pool of 2 took 602 s of CPU (552 user + 51 system), 908 s in CI. As now (``/usr/bin/time`` around
 pytest, load average 8 on 2 cores): the full matrix on proximity-network 102 s of CPU (345 s of
 wall time), each other problem 20-25 s of CPU (55-130 s of wall time), about 330 s of CPU in all.
+Without the ``validators`` check on the other problems (2026-12-06, load 5): delaunay 38.9 -> 21.5
+CPU-s (benchmarks/README.md, "The test suite's CI time: cuts per test").
 
 Run: .venv/bin/python -m pytest tests/grader/test_kattis.py -q
 """
@@ -87,7 +94,8 @@ def verify_one(problem_id: str, tmp_path: Path, full: bool) -> dict:
     env = {**os.environ, "XDG_CONFIG_HOME": str(tmp_path / "config"),
            "PATH": f"{Path(sys.executable).parent}:{os.environ.get('PATH', '')}"}
     only = [] if full else ["-s", "accepted/"]
-    proc = subprocess.run([str(VERIFY), str(dest), *only, "-p", "config", "data", "validators", "submissions"],
+    parts = ["config", "data", "validators", "submissions"] if full else ["config", "data", "submissions"]
+    proc = subprocess.run([str(VERIFY), str(dest), *only, "-p", *parts],
                           cwd=tmp_path, env=env, capture_output=True, text=True, timeout=1800)
     problem = load_problem(problem_id)
     exported = selection(problem, scored_groups(problem, groups))
@@ -147,6 +155,59 @@ def test_verifyproblem_accepts_the_problem_with_its_groups(pid, tmp_path):
     else:
         assert re.search(r"accepted/\S+ .*OK", out), (pid, out[-3000:])
         assert set(table) <= set(res["subs"]["accepted"]), (pid, sorted(table))  # only accepted/ ran
+
+
+def _exported_validator(problem_id: str) -> dict:
+    """The namespace of the problem's exported output validator (the file ``export`` writes)."""
+    from grader.contest.kattis import embed_checker
+
+    ns = {"__name__": f"kattis_junk_{problem_id.replace('-', '_')}"}
+    exec(compile(embed_checker(load_problem(problem_id)), "checker.py", "exec"), ns)
+    return ns
+
+
+def _validate(ns: dict, folder: Path, input_text: str, answer_text: str, team: bytes) -> tuple[int, str]:
+    """Run the exported validator's Kattis entry in this process: its exit code and judge message."""
+    import io
+
+    (folder / "in").write_text(input_text)
+    (folder / "ans").write_text(answer_text)
+    old, sys.stdin = sys.stdin, io.TextIOWrapper(io.BytesIO(team))
+    try:
+        code = ns["_checker_runtime"]["kattis_main"](ns, ["checker.py", str(folder / "in"), str(folder / "ans"), str(folder)])
+    finally:
+        sys.stdin = old
+    return code, (folder / "judgemessage.txt").read_text()
+
+
+@pytest.mark.skipif(not VERIFY.exists(), reason="problemtools is not installed")
+@pytest.mark.parametrize("pid", sorted(PROBLEMS))
+def test_exported_output_validator_survives_problemtools_junk(pid, tmp_path):
+    """verifyproblem's ``validators`` part, the output validator's half, for every problem in this
+    process (verifyproblem runs that part on :data:`FULL_MATRIX` only: per problem it is about a
+    hundred validator processes, 20 CPU-s). problemtools' own junk outputs go through the exported
+    validator on the tests it would export (the samples and the first scored group): the four junk
+    files are rejected on some test (problemtools warns otherwise), and none of the junk, nor the
+    twenty "crash" files on the first three tests, makes it crash (a judge error: verifyproblem's
+    only error in that part); every run exits 42 or 43 with a message. The input validators' half
+    only warns, and ``data`` still runs them on every exported test."""
+    from problemtools.checks import validators as pt
+
+    problem = load_problem(pid)
+    cases = [(f.read_text(), f.with_suffix(".ans").read_text()) for f in sorted((problem.path / "data" / "sample").glob("*.in"))]
+    first, _count = scored_groups(problem, export_groups(pid))[0]
+    cases += [(t.input_text, t.answer_text) for t in problem.tests() if t.group == first.name]
+    assert len(cases) >= 3, (pid, len(cases))
+    ns = _exported_validator(pid)
+    for junk_cases, where in ((pt._JUNK_CASES, cases), (pt._JUNK_CASES_CRASH, cases[:3])):
+        for desc, junk in junk_cases:
+            codes = []
+            for input_text, answer_text in where:
+                code, message = _validate(ns, tmp_path, input_text, answer_text, junk)
+                assert code in (42, 43) and message.strip(), (pid, desc, code, message)
+                codes.append(code)
+            if junk_cases is pt._JUNK_CASES:
+                assert 43 in codes, (pid, desc, "accepted on every test")
 
 
 def test_export_writes_scored_groups(tmp_path):

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import csv
 import json
+import re
 import shutil
 import subprocess
 import sys
@@ -190,13 +191,22 @@ def test_cli_similarity_and_exit_codes(tmp_path):
 
 
 def test_grade_similarity_writes_the_report_next_to_the_grades(tmp_path):
+    """Two students hand in the same code: ``grade --similarity`` judges them, then flags the pair in
+    a report linked to their grading reports. CI time: their copy answers at once (an empty list, WA
+    on every test), so the judging takes seconds, not the half minute of the exact Fraction
+    arithmetic running into the time limit; the similarity of the copied code is the point here,
+    and ``grade``'s scores of real solutions are tested in test_grade.py."""
+    source = (FIX / "copied_original.py").read_text()
+    assert source.count("def delaunay(points):\n") == 1
+    source = source.replace("def delaunay(points):\n", "def delaunay(points):\n    return []\n")
     for student in ("kim", "lou"):
         (tmp_path / "class" / student).mkdir(parents=True)
-        (tmp_path / "class" / student / "delaunay.py").write_text((FIX / "copied_original.py").read_text())
+        (tmp_path / "class" / student / "delaunay.py").write_text(source)
     r = grader("grade", "delaunay", str(tmp_path / "class"), "--db", str(tmp_path / "db.sqlite"), "--quiet",
                "--reports", str(tmp_path / "reports"), "--similarity")
     assert r.returncode == 0, r.stderr
     assert "kim  ~  lou" in r.stderr and "kim" in r.stdout
+    assert re.search(r"^kim +WA +0/100", r.stdout, re.M) and re.search(r"^lou +WA +0/100", r.stdout, re.M), r.stdout
     page = (tmp_path / "reports" / "similarity.html").read_text()
     assert f'href="students/{report_name("kim")}"' in page  # linked to the grading report
 

@@ -5,7 +5,7 @@ the instructor releases, collects, autogrades and returns feedback with formgrad
 Used by tests/hub/test_hub.py (one browser student beside the two that use the HTTP APIs)::
 
     with student_browser() as browser:
-        s = BrowserStudent(browser, hub, "hubtest-student3", SHOTS)
+        s = BrowserStudent(browser, hub, hub_session.STUDENTS[2], SHOTS)
         s.log_in(); s.fetch("delaunay"); s.write_and_check("delaunay", code); s.submit("delaunay")
 
 Everything is done as a student does it: the hub's login form and *Start My Server*;

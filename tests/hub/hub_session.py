@@ -13,6 +13,7 @@ from __future__ import annotations
 import json
 import os
 import pwd
+import re
 import secrets
 import shutil
 import signal
@@ -28,9 +29,15 @@ import requests
 
 REPO = Path(__file__).resolve().parents[2]
 DEPLOY = REPO / "deploy" / "jupyterhub" / "deploy.sh"
-# test accounts of their own (not make hub's hub-*): the test empties their homes before it starts
-INSTRUCTOR = "hubtest-instructor"
-STUDENTS = ("hubtest-student1", "hubtest-student2", "hubtest-student3", "hubtest-student4")  # 3, 4: the browser
+# Test accounts of their own (not make hub's hub-*), named after this process (``hubtest<pid>-...``):
+# two checkouts' hub tests on one machine at once never share, empty or reinstall each other's
+# accounts. Hub.stop removes them (userdel --remove: the home and the private group), and start_hub
+# first removes those of earlier runs whose process is gone (a run killed before its clean-up).
+PREFIX = f"hubtest{os.getpid()}-"
+INSTRUCTOR = PREFIX + "instructor"
+STUDENTS = tuple(f"{PREFIX}student{k}" for k in (1, 2, 3, 4))  # 3, 4: the browser
+#: the names this module gives accounts (the clean-up removes no other account)
+ACCOUNT_NAME = re.compile(r"hubtest([0-9]+)-(instructor|student[0-9])")
 
 
 def can_run() -> str:
@@ -89,6 +96,7 @@ class Hub:
         except OSError:
             pass
         shutil.rmtree(self.home, ignore_errors=True)
+        remove_accounts((INSTRUCTOR, *STUDENTS))
 
     def log_tail(self, lines: int = 60, having: str = "") -> str:
         """The hub log's last ``lines`` lines (those that contain ``having``): the hub's and its
@@ -98,6 +106,49 @@ class Hub:
         except OSError as e:
             return f"(no hub log: {e})"
         return "\n".join([t for t in text if having in t][-lines:])
+
+
+def remove_accounts(names) -> list[str]:
+    """Remove the accounts ``names`` that exist and are this module's (:data:`ACCOUNT_NAME`): their
+    processes killed, then ``userdel --remove`` (home, mail spool, private group); return those removed."""
+    removed = []
+    for name in names:
+        if not ACCOUNT_NAME.fullmatch(name):
+            raise ValueError(f"{name!r} is not a hub test account (hubtest<pid>-instructor or -student<k>)")
+        try:
+            uid = pwd.getpwnam(name).pw_uid
+        except KeyError:
+            continue
+        for p in Path("/proc").iterdir():
+            if p.name.isdigit():
+                try:
+                    if p.stat().st_uid == uid:
+                        os.kill(int(p.name), signal.SIGKILL)
+                except (OSError, ProcessLookupError):
+                    pass
+        subprocess.run(["userdel", "--remove", "--force", name], capture_output=True, timeout=60)
+        removed.append(name)
+    return removed
+
+
+def _alive(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        return True
+    return True
+
+
+def remove_stale_accounts() -> list[str]:
+    """Remove the hub test accounts of runs whose process is gone; return their names."""
+    stale = []
+    for pw in pwd.getpwall():
+        m = ACCOUNT_NAME.fullmatch(pw.pw_name)
+        if m and int(m.group(1)) != os.getpid() and not _alive(int(m.group(1))):
+            stale.append(pw.pw_name)
+    return remove_accounts(stale)
 
 
 def _own(tree: Path, pw: pwd.struct_passwd) -> None:
@@ -171,6 +222,7 @@ def seed_numba_cache(account: str, dest: Path | None = None) -> Path | None:
 
 def start_hub(timeout: float = 240) -> Hub:
     """Install the deployment into a fresh COURSE_HOME and start the hub; return when it answers."""
+    remove_stale_accounts()
     home = Path(tempfile.mkdtemp(prefix="course-hub-"))
     os.chmod(home, 0o755)
     port = _free_port()

@@ -38,14 +38,15 @@ pytestmark = [pytest.mark.xdist_group("hub"),
               pytest.mark.skipif(bool(hs.can_run()), reason=hs.can_run() or "runs")]
 
 REPO = hs.REPO
+S1, S2, S3, S4 = hs.STUDENTS  # this run's accounts (hubtest<pid>-student1 ...)
 SOLUTIONS = {  # student -> problem -> the solution they write
-    "hubtest-student1": {"delaunay": "accepted_walk.py", "closest-pair": "accepted_sweep.py"},
-    "hubtest-student2": {"delaunay": "wrong_prefix_collinear.py", "closest-pair": "wrong_x_neighbours.py"},
-    "hubtest-student3": {"delaunay": "accepted_walk.py", "closest-pair": "wrong_x_neighbours.py"},
-    "hubtest-student4": {"delaunay": "wrong_prefix_collinear.py", "closest-pair": "accepted_sweep.py"},
+    S1: {"delaunay": "accepted_walk.py", "closest-pair": "accepted_sweep.py"},
+    S2: {"delaunay": "wrong_prefix_collinear.py", "closest-pair": "wrong_x_neighbours.py"},
+    S3: {"delaunay": "accepted_walk.py", "closest-pair": "wrong_x_neighbours.py"},
+    S4: {"delaunay": "wrong_prefix_collinear.py", "closest-pair": "accepted_sweep.py"},
 }
-API_STUDENTS = ("hubtest-student1", "hubtest-student2")   # through the HTTP APIs the pages call
-BROWSER_STUDENTS = ("hubtest-student3", "hubtest-student4")  # through the pages, in chromium
+API_STUDENTS = (S1, S2)   # through the HTTP APIs the pages call
+BROWSER_STUDENTS = (S3, S4)  # through the pages, in chromium
 PROBLEMS = ("delaunay", "closest-pair")
 SHOTS = REPO / "build" / "screenshots"
 
@@ -147,7 +148,7 @@ def test_scores_equal_the_judge(graded, hub):
         for a in PROBLEMS:
             nb = course / "submitted" / name / a / f"{a}.ipynb"
             assert scores[name][a] == pytest.approx(_judge(a, nb)), (name, a)
-    assert scores["hubtest-student1"]["delaunay"] > scores["hubtest-student2"]["delaunay"]
+    assert scores[S1]["delaunay"] > scores[S2]["delaunay"]
 
 
 def test_students_fetch_their_feedback(graded):
@@ -226,7 +227,7 @@ def _as(user: str, code: str) -> subprocess.CompletedProcess:
 
 
 def test_isolation_between_students(graded, hub):
-    other = pwd.getpwnam("hubtest-student1").pw_dir
+    other = pwd.getpwnam(S1).pw_dir
     inbound = hub.home / "exchange" / "delaunay-course" / "inbound"
     # after the round trip's release, submit and collect: deploy.sh's modes are kept (test_exchange.py)
     assert oct(os.stat(hub.home / "exchange").st_mode & 0o7777) == "0o1777"
@@ -247,11 +248,11 @@ except OSError:
 leaks += glob.glob({str(inbound)!r} + "/*/*.ipynb")
 print(leaks)
 """
-    r = _as("hubtest-student2", probe)
+    r = _as(S2, probe)
     assert r.returncode == 0, r.stderr
     assert r.stdout.strip() == "[]", r.stdout
     # the probe is real: the owner reads their own notebook
-    mine = _as("hubtest-student1", f"print(len(open({other!r} + '/delaunay/delaunay.ipynb').read()) > 0)")
+    mine = _as(S1, f"print(len(open({other!r} + '/delaunay/delaunay.ipynb').read()) > 0)")
     assert mine.stdout.strip() == "True", mine.stderr
 
 
@@ -272,7 +273,7 @@ print("LEAKS", leaks)
 def _private_paths(hub) -> tuple[list[str], str]:
     """What a student must not read: the other student's home and work, the instructor's course
     (sources with solutions, gradebook, submissions), the exchange's inbound."""
-    other = pwd.getpwnam("hubtest-student1").pw_dir
+    other = pwd.getpwnam(S1).pw_dir
     course = hub.home / "course"
     paths = [other, other + "/delaunay/delaunay.ipynb", str(course), str(course / "gradebook.db"),
              str(course / "source" / "delaunay" / "delaunay.ipynb"), str(course / "delaunay" / "course.yaml"),
@@ -283,10 +284,10 @@ def _private_paths(hub) -> tuple[list[str], str]:
 def test_a_students_own_kernel_reads_nothing_private(graded, hub):
     _, students, _ = graded
     paths, inbound = _private_paths(hub)
-    out = students["hubtest-student2"].run_in_kernel(LEAK_PROBE.format(paths=paths, inbound=inbound))
+    out = students[S2].run_in_kernel(LEAK_PROBE.format(paths=paths, inbound=inbound))
     assert "LEAKS []" in out, out
     # the probe is real: in student1's own kernel the same code reads student1's files
-    mine = students["hubtest-student1"].run_in_kernel(LEAK_PROBE.format(paths=paths[:2], inbound="/nonexistent"))
+    mine = students[S1].run_in_kernel(LEAK_PROBE.format(paths=paths[:2], inbound="/nonexistent"))
     assert "LEAKS " + repr(paths[:2]) in mine, mine
 
 
@@ -327,7 +328,7 @@ def test_students_can_check_samples_but_not_rebuild_hidden_tests(graded, hub):
     import yaml
 
     public = hub.home / "problems"
-    listing = _as("hubtest-student2", f"""
+    listing = _as(S2, f"""
 import json, os
 files = [os.path.join(d, f) for d, _, fs in os.walk({str(public)!r}) for f in fs]
 print(json.dumps({{f: open(f, errors="replace").read() if f.endswith(".yaml") else "" for f in files}}))
@@ -344,8 +345,8 @@ print(json.dumps({{f: open(f, errors="replace").read() if f.endswith(".yaml") el
         assert "seed" not in mine and not [g for g in mine["groups"] if g.get("cases") and not g.get("withheld")], mine
         assert (full / pid / "generators").is_dir()
     # the sample check, as the student (the jailed judge, the student's own caches)
-    home = pwd.getpwnam("hubtest-student1").pw_dir
-    check = _as("hubtest-student1", f"""
+    home = pwd.getpwnam(S1).pw_dir
+    check = _as(S1, f"""
 import os
 os.environ.update(GRADER_PROBLEMS={str(public)!r}, GRADER_CACHE={home!r} + "/.cache/grader",
                   NUMBA_CACHE_DIR={home!r} + "/.cache/numba")
@@ -368,4 +369,14 @@ def test_the_browser_students_checked_submitted_and_read_feedback(graded):
             assert a in text and ("Score" in text or "score" in text), text[:500]
     # each problem: one of them right, one wrong on degenerate input, and formgrader tells them apart
     for a in PROBLEMS:
-        assert scores["hubtest-student3"][a] != scores["hubtest-student4"][a], (a, scores)
+        assert scores[S3][a] != scores[S4][a], (a, scores)
+
+
+def test_the_clean_up_removes_only_this_modules_accounts():
+    """The accounts are this run's (named after its process) and the clean-up refuses any other name,
+    the old shared ``hubtest-student1`` too (a run of an older checkout may be using it)."""
+    assert all(hs.ACCOUNT_NAME.fullmatch(u) for u in (hs.INSTRUCTOR, *hs.STUDENTS))
+    assert str(os.getpid()) in hs.INSTRUCTOR and len(set(hs.STUDENTS)) == 4
+    for other in ("root", "hubtest-student1", "hub-student1", "hubtest12-student1x"):
+        with pytest.raises(ValueError, match="not a hub test account"):
+            hs.remove_accounts([other])

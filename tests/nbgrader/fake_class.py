@@ -210,7 +210,10 @@ def gradebook_scores(root: Path, problem_id: str) -> dict[str, dict]:
 
 
 def judge_json(problem_id: str, path: Path) -> dict:
-    """``python -m grader judge PROBLEM PATH --json`` (the CLI's own code, in this process)."""
+    """``python -m grader judge PROBLEM PATH --json --counterexample-seconds 0`` (the CLI's own code,
+    in this process). CI time: no counterexample search after a failing group (up to 10 s a
+    submission by default); the verdicts and scores compared with the gradebook do not depend on it,
+    and the search is tested in tests/grader/test_counterexample.py."""
     import contextlib
     import io
 
@@ -218,7 +221,7 @@ def judge_json(problem_id: str, path: Path) -> dict:
 
     buf = io.StringIO()
     with contextlib.redirect_stdout(buf):
-        assert main(["judge", problem_id, str(path), "--json"]) in (0, 1)  # 1: a verdict other than AC
+        assert main(["judge", problem_id, str(path), "--json", "--counterexample-seconds", "0"]) in (0, 1)  # 1: not AC
     return json.loads(buf.getvalue())
 
 
