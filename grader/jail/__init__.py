@@ -16,6 +16,7 @@ One entry point: :class:`Sandbox` (with :class:`Limits`) starts jailed children;
 ``paths``, ``procs``      path and process-table helpers
 ``doctor``                ``python -m grader.jail``: what this machine gives to root and to this user
 ``launcher``              the C launcher of compiled programs (``launcher.c``), built once into the trusted cache
+``trust``                 whom a cached file must belong to (also the test cache's rule)
 ``child_bootstrap.py``    the child side (stdlib only, run by path, never imported)
 ========================  =================================================================
 
@@ -30,13 +31,26 @@ Example:
 
 from pathlib import Path
 
-from .errors import NoFreeSlot, UnsafeSharedState
-from .sandbox import (JAIL_ENV, JAIL_WORKDIR, LOCK_DIR, TRUSTED_ENV, UID_BASE, JailUnavailable, Limits, Sandbox,
-                      bwrap_path, is_root, jail_kind, mechanism, python_roots, refusal_message, refuses_processes,
-                      require_jail, uid_processes)
-
 #: The child's program (run with ``python -IS -c``; the grader's directory is not visible in the jail).
 BOOTSTRAP_PATH = Path(__file__).with_name("child_bootstrap.py")
+
+#: Where each public name lives. They load on first use (PEP 562), so a module that needs one small
+#: part of the jail (``grader.jail.trust``, the launcher's cache) does not load the sandbox.
+_LAZY = {name: "errors" for name in ("NoFreeSlot", "UnsafeSharedState")} | {
+    name: "sandbox" for name in ("JAIL_ENV", "JAIL_WORKDIR", "LOCK_DIR", "TRUSTED_ENV", "UID_BASE", "JailUnavailable",
+                                 "Limits", "Sandbox", "bwrap_path", "is_root", "jail_kind", "mechanism",
+                                 "python_roots", "refusal_message", "refuses_processes", "require_jail",
+                                 "uid_processes")}
+
+
+def __getattr__(name: str):
+    if name in _LAZY:
+        from importlib import import_module
+        value = getattr(import_module(f".{_LAZY[name]}", __name__), name)
+        globals()[name] = value
+        return value
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
 
 __all__ = ["BOOTSTRAP_PATH", "JAIL_ENV", "JAIL_WORKDIR", "LOCK_DIR", "TRUSTED_ENV", "UID_BASE", "JailUnavailable",
            "NoFreeSlot", "UnsafeSharedState",

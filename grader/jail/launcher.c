@@ -53,6 +53,26 @@ static void refuse(const char *why) {
     _exit(127);
 }
 
+/* The limits both modes set before execv: RLIMIT_NPROC to NPROC when NPROC > 0 (the grader passes 0
+ * where it sets none), RLIMIT_STACK to STACK bytes when STACK > 0 (capped at the hard limit). */
+static void set_limits(long long nproc, long long stack) {
+    if (nproc > 0) {
+        struct rlimit limit = {(rlim_t)nproc, (rlim_t)nproc};
+        if (setrlimit(RLIMIT_NPROC, &limit) != 0)
+            refuse(strerror(errno));
+    }
+    if (stack > 0) {
+        struct rlimit current;
+        if (getrlimit(RLIMIT_STACK, &current) == 0) {
+            rlim_t want = (rlim_t)stack;
+            if (current.rlim_max != RLIM_INFINITY && current.rlim_max < want)
+                want = current.rlim_max;
+            struct rlimit limit = {want, want};
+            (void)setrlimit(RLIMIT_STACK, &limit);
+        }
+    }
+}
+
 /* ---- SERVE: one jail per submission, one fresh process per test ---------------------------------
  *
  * The grader starts `grader-launcher serve ...` as pid 1 of a new bubblewrap jail, with the jail's
@@ -169,21 +189,7 @@ static void start_test(int fds[3], long long cpu_s, long long nproc, long long s
     struct rlimit cpu = {(rlim_t)cpu_s, (rlim_t)cpu_s};
     if (setrlimit(RLIMIT_CPU, &cpu) != 0)
         refuse(strerror(errno));
-    if (nproc > 0) {
-        struct rlimit limit = {(rlim_t)nproc, (rlim_t)nproc};
-        if (setrlimit(RLIMIT_NPROC, &limit) != 0)
-            refuse(strerror(errno));
-    }
-    if (stack > 0) {
-        struct rlimit current;
-        if (getrlimit(RLIMIT_STACK, &current) == 0) {
-            rlim_t want = (rlim_t)stack;
-            if (current.rlim_max != RLIM_INFINITY && current.rlim_max < want)
-                want = current.rlim_max;
-            struct rlimit limit = {want, want};
-            (void)setrlimit(RLIMIT_STACK, &limit);
-        }
-    }
+    set_limits(nproc, stack);
     if (chdir(workdir) != 0)
         refuse(strerror(errno));
     if (prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0) != 0 || prctl(PR_SET_SECCOMP, SECCOMP_MODE_FILTER, &filter_prog) != 0)
@@ -348,21 +354,7 @@ int main(int argc, char **argv) {
     signal(SIGPIPE, SIG_IGN);
     signal(SIGXFSZ, SIG_IGN);
 
-    if (nproc > 0) {
-        struct rlimit limit = {(rlim_t)nproc, (rlim_t)nproc};
-        if (setrlimit(RLIMIT_NPROC, &limit) != 0)
-            refuse(strerror(errno));
-    }
-    if (stack > 0) {
-        struct rlimit current;
-        if (getrlimit(RLIMIT_STACK, &current) == 0) {
-            rlim_t want = (rlim_t)stack;
-            if (current.rlim_max != RLIM_INFINITY && current.rlim_max < want)
-                want = current.rlim_max;
-            struct rlimit limit = {want, want};
-            (void)setrlimit(RLIMIT_STACK, &limit);
-        }
-    }
+    set_limits(nproc, stack);
     close((int)ctl_in);
     close((int)ctl_out);
 

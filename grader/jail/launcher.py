@@ -39,6 +39,8 @@ import sys
 import tempfile
 from pathlib import Path
 
+from .trust import unsafe_reason as trust_reason
+
 SOURCE = Path(__file__).with_name("launcher.c")
 REPO = Path(__file__).resolve().parent.parent.parent
 #: The C compilers tried, in this order (found in the system's directories only).
@@ -73,28 +75,13 @@ def roots() -> list[Path]:
     return [cache / "launcher", Path.home() / ".cache" / "grader" / "launcher"]
 
 
-def _trusted_uids() -> set[int]:
-    uids = {0, os.geteuid()}
-    try:
-        uids.add(REPO.stat().st_uid)
-    except OSError:
-        pass
-    return uids
-
-
 def unsafe_reason(path: Path) -> str | None:
-    """Why ``path`` (itself) cannot be trusted, or None: a link, a stranger's, or writable by group/others."""
+    """Why ``path`` (itself) cannot be trusted (:func:`grader.jail.trust.unsafe_reason`), or None;
+    a path that cannot be read is not trusted."""
     try:
-        st = os.lstat(path)
+        return trust_reason(path)
     except OSError as exc:
         return f"{path}: {exc.strerror}"
-    if stat.S_ISLNK(st.st_mode):
-        return f"{path} is a symbolic link"
-    if st.st_uid not in _trusted_uids():
-        return f"{path} is owned by uid {st.st_uid}, not by root, you or the checkout's owner"
-    if st.st_mode & 0o022:
-        return f"{path} is writable by group or others (mode {stat.S_IMODE(st.st_mode):o})"
-    return None
 
 
 def _names(folder: Path) -> tuple[Path, Path]:

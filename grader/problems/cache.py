@@ -38,11 +38,12 @@ import importlib.util
 import json
 import os
 import shutil
-import stat
 import sys
 import tempfile
 from pathlib import Path
 from typing import Any, Callable
+
+from ..jail.trust import unsafe_reason
 
 REPO = Path(__file__).resolve().parent.parent.parent
 CACHE_FORMAT = 1
@@ -59,29 +60,6 @@ def cache_root() -> Path:
 def private_root() -> Path:
     """The account's own cache, used when the configured one cannot be trusted or written."""
     return Path.home() / ".cache" / "grader"
-
-
-def trusted_uids() -> set[int]:
-    """Who may own a cache the grader reads: root, this account, the checkout's owner."""
-    uids = {0, os.geteuid()}
-    try:
-        uids.add(REPO.stat().st_uid)
-    except OSError:
-        pass
-    return uids
-
-
-def unsafe_reason(path: Path) -> str | None:
-    """Why ``path`` (itself, not what it holds) cannot be trusted, or None when it can."""
-    st = os.lstat(path)
-    if stat.S_ISLNK(st.st_mode):
-        return f"{path} is a symbolic link"
-    if st.st_uid not in trusted_uids():
-        return f"{path} is owned by uid {st.st_uid}, not by root, you or the checkout's owner"
-    if st.st_mode & 0o022:
-        who = " and ".join(w for w, bit in (("group", 0o020), ("others", 0o002)) if st.st_mode & bit)
-        return f"{path} is writable by {who} (mode {stat.S_IMODE(st.st_mode):o})"
-    return None
 
 
 def tree_reason(folder: Path) -> str | None:

@@ -23,11 +23,10 @@ import pytest
 
 from grader.jail import Limits, Sandbox, doctor, launcher
 from grader.jail.sandbox import jail_kind
-from grader.judging.compile import compile_source
-from grader.judging.languages import CPP
 from grader.judging.program_server import run_compiled
 
 from . import ordinary_user
+from .cpp_probe import compiled_probe
 
 needs_gcc = pytest.mark.skipif(launcher.compiler() is None or shutil.which("g++") is None,
                                reason="needs gcc and g++")
@@ -69,11 +68,7 @@ int main(int argc, char** argv) {
 
 @pytest.fixture(scope="module")
 def probe(tmp_path_factory) -> str:
-    if launcher.compiler() is None or shutil.which("g++") is None or jail_kind() != "bwrap":
-        pytest.skip("needs gcc, g++ and the bubblewrap jail")
-    built = compile_source(PROBE, CPP, str(tmp_path_factory.mktemp("probe")))
-    assert built.ok, built.message
-    return built.binary
+    return compiled_probe(PROBE, tmp_path_factory)
 
 
 def _started(binary: str, monkeypatch, starter: str) -> tuple[str, str | None]:

@@ -21,7 +21,6 @@ Run: .venv/bin/python -m pytest tests/grader/test_program_server.py -q -p no:cac
 from __future__ import annotations
 
 import os
-import shutil
 import signal
 import sys
 import threading
@@ -31,13 +30,11 @@ import pytest
 
 from grader.jail import Limits, Sandbox, launcher
 from grader.jail.procs import children
-from grader.jail.sandbox import jail_kind
 from grader.judging import program_server
-from grader.judging.compile import compile_source
-from grader.judging.languages import CPP
 from grader.judging.program_server import run_compiled
 
 from . import ordinary_user
+from .cpp_probe import compiled_probe
 
 #: The probe: its first input word says what to do; it prints what it saw.
 PROBE = r"""
@@ -130,11 +127,7 @@ int main() {
 
 @pytest.fixture(scope="module")
 def probe(tmp_path_factory) -> str:
-    if launcher.compiler() is None or shutil.which("g++") is None or jail_kind() != "bwrap":
-        pytest.skip("needs gcc, g++ and the bubblewrap jail")
-    built = compile_source(PROBE, CPP, str(tmp_path_factory.mktemp("probe")))
-    assert built.ok, built.message
-    return built.binary
+    return compiled_probe(PROBE, tmp_path_factory)
 
 
 @pytest.fixture

@@ -31,15 +31,20 @@ REPO = Path(__file__).resolve().parents[2]
 HEAVY = ("numpy", "numba", "scipy", "reference_impl", "nbformat", "nbconvert", "matplotlib", "IPython", "sqlite3",
          "dask", "copydetect", "grader.jail", "grader.judging.runner", "grader.contest", "grader.classroom",
          "grader.course")
+#: of the jail, only its package (whose names load on first use) and the trust rule (standard
+#: library only, shared with the test cache) may load in a command that judges nothing
+LIGHT = ("grader.jail", "grader.jail.trust")
 
 REPORT = ("import json, sys\n"
           "heavy = {heavy!r}\n"
-          "print(json.dumps(sorted(m for m in sys.modules if m in heavy or m.startswith(tuple(h + '.' for h in heavy)))))\n")
+          "light = {light!r}\n"
+          "print(json.dumps(sorted(m for m in sys.modules if m not in light and (m in heavy or "
+          "m.startswith(tuple(h + '.' for h in heavy))))))\n")
 
 
 def _loaded(code: str, extra_heavy: tuple[str, ...] = ()) -> list[str]:
     """Run ``code`` in a fresh interpreter, then list the heavy modules it left in ``sys.modules``."""
-    script = code + "\n" + REPORT.format(heavy=HEAVY + extra_heavy)
+    script = code + "\n" + REPORT.format(heavy=HEAVY + extra_heavy, light=LIGHT)
     env = {"PATH": "/usr/bin:/bin", "PYTHONPATH": str(REPO), "HOME": str(Path.home())}
     env.update({k: os.environ[k] for k in ("GRADER_CACHE", "GRADER_PROBLEMS", "NUMBA_CACHE_DIR") if k in os.environ})
     r = subprocess.run([sys.executable, "-c", script], cwd=REPO, capture_output=True, text=True, timeout=120, env=env)
@@ -80,7 +85,7 @@ def test_a_judge_command_loads_the_jail_but_not_the_answer_key(tmp_path):
     code = ("import contextlib, io\nfrom grader.cli import main\n"
             f"with contextlib.redirect_stdout(io.StringIO()):\n    assert main(['judge', {pid!r}, {str(sub)!r}]) == 1\n")
     loaded = _loaded(code)
-    assert "grader.contest.judge" in loaded and "grader.jail" in loaded
+    assert "grader.contest.judge" in loaded and "grader.jail.sandbox" in loaded
     assert not [m for m in loaded if m.split(".")[0] in ("numpy", "numba", "reference_impl", "matplotlib", "nbformat")]
 
 
