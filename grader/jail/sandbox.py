@@ -339,8 +339,8 @@ class Sandbox:
 
     def _make_plan(self) -> Plan:
         assert self.group is not None
-        # a compiled program has no use for matplotlib's font list (and its jail's /tmp is emptied
-        # between tests, which a read-only file bound inside it would prevent)
+        # a compiled program under the static C launcher needs neither matplotlib's font list nor Python,
+        # and a path bound into its /tmp (a checkout under /tmp) would stop /tmp being emptied per test
         fontlist = None if self.program else matplotlib_fontlist()
         prog = seccomp.program(no_processes=self.no_processes)
         if self.kind == "bwrap" and self.profile == "compile":
@@ -352,7 +352,8 @@ class Sandbox:
                                                         plan.disk_mb, self._hidden)
             return plan
         if self.kind == "bwrap":
-            expose = outermost(python_roots()) + [p for p in (self.program, self.launcher) if p] \
+            pythons = [] if self.program and self.launcher else outermost(python_roots())
+            expose = pythons + [p for p in (self.program, self.launcher) if p] \
                 + ([fontlist] if fontlist else [])  # the font list last (see _bwrap_options)
             # root stages what bubblewrap (started as the sandbox uid) could not reach; a user binds directly
             plan = Plan([], expose, self.private_dir if self.root_mode else "", self._cover, self.files.mounts["/tmp"],
@@ -480,8 +481,7 @@ class Sandbox:
             "PATH": "/usr/local/bin:/usr/bin:/bin", "HOME": home, "TMPDIR": home, "LANG": "C.UTF-8",
             "LC_ALL": "C.UTF-8", "OMP_NUM_THREADS": "1", "OPENBLAS_NUM_THREADS": "1",
             "MKL_NUM_THREADS": "1", "NUMEXPR_NUM_THREADS": "1", "PYTHONDONTWRITEBYTECODE": "1",
-            "PYTHONHASHSEED": "0", "MPLBACKEND": "Agg",
-        }
+            "PYTHONHASHSEED": "0", "MPLBACKEND": "Agg"}
         env["MPLCONFIGDIR"] = os.path.join(home, ".matplotlib")  # holds the pre-built font cache
         return env
 

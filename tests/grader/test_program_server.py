@@ -255,3 +255,15 @@ def test_as_an_ordinary_account():
     assert r.returncode == 0, tail
     last = r.stdout.splitlines()[-1]
     assert "passed" in last and "failed" not in last and "skipped" not in last, tail
+
+
+def test_a_compiled_programs_jail_binds_no_python(probe, monkeypatch):
+    """The static launcher and the program are all a compiled submission's jail binds: no Python
+    installation. A checkout cloned under /tmp (as CI's is) has its venv there, and a venv bound
+    into the jail's /tmp made every test's clean-up fail (the server then quit after each test)."""
+    from grader.jail.paths import python_roots, under
+    monkeypatch.delenv(launcher.LAUNCHER_ENV, raising=False)
+    with Sandbox(Limits(cpu_s=1, memory_mb=256), program=probe, no_processes=True) as b:
+        assert b.launcher, "the C launcher starts compiled programs here"
+        exposed = b._make_plan().expose
+    assert len(exposed) == 2 and not [p for p in exposed for r in python_roots() if under(p, r) or under(r, p)], exposed
