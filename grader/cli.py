@@ -479,8 +479,8 @@ def main(argv: list[str] | None = None) -> int:
 
 def _jail_refusal(exc: BaseException) -> bool:
     """True for :class:`grader.jail.JailUnavailable` (only a command that loaded the jail can raise it)."""
-    jail = sys.modules.get("grader.jail")
-    return jail is not None and isinstance(exc, jail.JailUnavailable)
+    errors = sys.modules.get("grader.jail.errors")
+    return errors is not None and isinstance(exc, errors.JailUnavailable)
 
 
 if __name__ == "__main__":

@@ -36,8 +36,8 @@ BOOTSTRAP_PATH = Path(__file__).with_name("child_bootstrap.py")
 
 #: Where each public name lives. They load on first use (PEP 562), so a module that needs one small
 #: part of the jail (``grader.jail.trust``, the launcher's cache) does not load the sandbox.
-_LAZY = {name: "errors" for name in ("NoFreeSlot", "UnsafeSharedState")} | {
-    name: "sandbox" for name in ("JAIL_ENV", "JAIL_WORKDIR", "LOCK_DIR", "TRUSTED_ENV", "UID_BASE", "JailUnavailable",
+_LAZY = {name: "errors" for name in ("JailUnavailable", "NoFreeSlot", "UnsafeSharedState")} | {
+    name: "sandbox" for name in ("JAIL_ENV", "JAIL_WORKDIR", "LOCK_DIR", "TRUSTED_ENV", "UID_BASE",
                                  "Limits", "Sandbox", "bwrap_path", "is_root", "jail_kind", "mechanism",
                                  "python_roots", "refusal_message", "refuses_processes", "require_jail",
                                  "uid_processes")}
