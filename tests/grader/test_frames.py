@@ -13,6 +13,7 @@ import json
 import math
 import random
 import struct
+import sys
 from pathlib import Path
 
 import pytest
@@ -246,3 +247,26 @@ def test_corrupted_frames_are_refused_or_read_never_a_crash():
         except CHK.PresentationError:
             pass
     assert outcomes["refused"] > 100 and outcomes["read"] > 10, outcomes
+
+
+def test_the_childs_copy_builds_the_same_frames():
+    """The jailed child builds frames with its own copy of ``frame_of`` (it imports nothing of the
+    grader): on the same values both copies give the same frame, or both none."""
+    import ast
+    import binascii
+    from array import array
+    from itertools import chain
+
+    from grader.jail import BOOTSTRAP_PATH
+    # the child reads its configuration when it starts, so its function is taken out of its source
+    tree = ast.parse(BOOTSTRAP_PATH.read_text())
+    source = next(n for n in tree.body if isinstance(n, ast.FunctionDef) and n.name == "_frame_of")
+    space = {"chain": chain, "array": array, "sys": sys, "binascii": binascii}
+    exec(compile(ast.Module([source], []), str(BOOTSTRAP_PATH), "exec"), space)
+    child = type("Child", (), {"_frame_of": staticmethod(space["_frame_of"])})
+    rng = random.Random(7)
+    values = [CELLS, [[0.5, 1.5]] * 128, [[0.5, 1.5]] * 127, [[[1.0, 2.0]] * 100, [[3.0, 4.0]] * 60, []],
+              [[1.0, 2.0, 3.0]] * 100, [[1.0] * 17] * 20, [[1, 2]] * 200, [[math.nan, math.inf]] * 200, [], "x",
+              [[rng.random(), rng.random()] for _ in range(300)], [[[0.25, 0.75]] * 70] * 2 + [[[1.0]]]]
+    for value in values:
+        assert child._frame_of(value) == frames.frame_of(value), repr(value)[:80]
